@@ -1,0 +1,16 @@
+# SPDX-License-Identifier: MIT
+# Compiler options applied per target (never through CMAKE_CXX_FLAGS), see STYLE.md §9.
+
+function(sparsedyn_target_options target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow
+                                           -Wnon-virtual-dtor -ffp-contract=off)
+  if(SPARSEDYN_WARNINGS_AS_ERRORS)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+  if(SPARSEDYN_SANITIZE)
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined
+                                             -fno-sanitize-recover=undefined
+                                             -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
+endfunction()

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Installs the Debian 12 packages the build needs, only those missing (apt-get, with sudo when
+# not root). Sourced or run by scripts/run.sh, scripts/test.sh and .ci/run.
+#   scripts/deps.sh            build + test dependencies
+#   scripts/deps.sh --peers    also the peer engines for bench/peers (Bullet, FCL, libccd)
+set -euo pipefail
+
+packages=(build-essential cmake pkg-config libeigen3-dev libqhull-dev libcli11-dev
+          nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libassimp-dev
+          libfcl-dev libccd-dev libbullet-dev libcgal-dev libgmp-dev libmpfr-dev)
+if [[ "${1:-}" == "--peers" ]]; then
+  packages+=(gnuplot-nox)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if ((${#missing[@]} == 0)); then
+  exit 0
+fi
+
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then
+  sudo_cmd=(sudo)
+fi
+echo "scripts/deps.sh: installing ${missing[*]}" >&2
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+  "${missing[@]}" >&2

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# The main job: installs what is missing, builds the optimized `sparsedyn` tool and runs it.
+# With no arguments it runs the embedded default scene and prints a summary; any arguments are
+# passed to `sparsedyn` (e.g. scripts/run.sh run --preset gas --n 10000 --json).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+"$root/scripts/deps.sh"
+cmake -S "$root" --preset bench -DSPARSEDYN_BUILD_TESTS=OFF -DSPARSEDYN_BUILD_BENCHMARKS=OFF \
+  -DSPARSEDYN_BUILD_EXAMPLES=OFF >/dev/null
+cmake --build "$root/build/bench" --target sparsedyn_cli -j"$(nproc)" >/dev/null
+if (($# == 0)); then
+  set -- run
+fi
+exec "$root/build/bench/apps/cli/sparsedyn" "$@"
