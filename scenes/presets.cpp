@@ -1,3 +1,45 @@
 // SPDX-License-Identifier: MIT
-// Placeholder translation unit; the presets land with the World (issue #2).
-namespace sparsedyn::scenes {}
+#include "scenes/presets.hpp"
+
+#include "scenes/gas.hpp"
+
+namespace sparsedyn::scenes {
+namespace {
+
+// The embedded default scene of `sparsedyn run`: a small periodic gas that runs in about a
+// second, until the polyhedra of issue #4 take its place.
+constexpr std::uint32_t kDefaultN = 2000;
+constexpr double kDefaultDensity = 0.10;
+constexpr double kDefaultDuration = 20.0;
+constexpr double kGasDuration = 10.0;
+
+Result<Preset> MakeGasPreset(const PresetRequest& request, std::uint32_t n, double density,
+                             double duration) {
+  GasOptions options;
+  options.n = request.n.value_or(n);
+  options.packing = request.density.value_or(density);
+  options.seed = request.seed.value_or(1);
+  WorldSettings settings;
+  settings.broadphase = request.broadphase.value_or(Broadphase::kGrid);
+  Result<World> world = MakeGas(options, settings);
+  if (!world) return world.error();
+  return Preset{std::move(*world), request.name, options.n, options.packing, options.seed,
+                duration};
+}
+
+}  // namespace
+
+std::vector<std::string> PresetNames() { return {"default", "gas"}; }
+
+Result<Preset> MakePreset(const PresetRequest& request) {
+  if (request.n && *request.n == 0) return Error{"--n must be >= 1"};
+  if (request.name == "default") {
+    return MakeGasPreset(request, kDefaultN, kDefaultDensity, kDefaultDuration);
+  }
+  if (request.name == "gas") return MakeGasPreset(request, 1000, 0.05, kGasDuration);
+  std::string names;
+  for (const std::string& name : PresetNames()) names += (names.empty() ? "" : ", ") + name;
+  return Error{"unknown preset '" + request.name + "' (known: " + names + ")"};
+}
+
+}  // namespace sparsedyn::scenes

@@ -1,2 +1,18 @@
 // SPDX-License-Identifier: MIT
-int main() { return 0; }
+// `sparsedyn`: the command-line tool (DESIGN.md "Command line").
+#include <CLI/CLI.hpp>
+
+#include "apps/cli/run_command.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"sparsedyn: event-driven collision detection and rigid-body simulation"};
+  app.require_subcommand(1);
+  sparsedyn::cli::AddRunCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // RuntimeError carries a subcommand's exit status; the rest are usage errors (exit 2+).
+    return app.exit(e);
+  }
+  return 0;
+}

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+#include "sparsedyn/result.hpp"
+#include "sparsedyn/statistics.hpp"
+#include "sparsedyn/types.hpp"
+
+namespace sparsedyn {
+
+/// Which elements an actor is compared with when it predicts its next meeting.
+enum class Broadphase {
+  kAllPairs,  // every other element (the thesis, O(N) per prediction)
+  kGrid,      // uniform cells with cell-crossing events (O(1) per event on average)
+};
+
+/// The space the bodies live in.
+struct Container {
+  enum class Kind { kOpen, kWalledBox, kPeriodicBox };
+  Kind kind = Kind::kOpen;
+  Vec3 lo = Vec3::Zero();
+  Vec3 hi = Vec3::Zero();
+
+  static Container Open() { return {}; }
+  /// A box with six static, immovable walls (restitution of the body applies).
+  static Container WalledBox(const Vec3& lo, const Vec3& hi) { return {Kind::kWalledBox, lo, hi}; }
+  /// A box with periodic boundaries (minimum-image convention).
+  static Container PeriodicBox(const Vec3& lo, const Vec3& hi) {
+    return {Kind::kPeriodicBox, lo, hi};
+  }
+};
+
+/// World-wide settings; plain data with defaults.
+struct WorldSettings {
+  Container container;
+  Broadphase broadphase = Broadphase::kGrid;
+  Vec3 gravity = Vec3::Zero();  // m/s^2, applies to every body
+  /// Spheres whose gap is below this fraction of their summed radii touch (contact tolerance).
+  double contact_tolerance = 1e-9;
+  /// Collisions approaching slower than this (m/s) are elastic: the collapse guard.
+  double elastic_below_speed = 1e-6;
+  /// Grid cells per body (the cells are never smaller than the largest interaction distance).
+  double grid_cells_per_body = 1.0;
+  /// Abort AdvanceTo with an error when this many events pass without the clock advancing by
+  /// more than a relative 1e-12 (inelastic collapse or a stuck configuration): no hang.
+  std::uint64_t stall_event_limit = 1u << 22;
+  bool profile_phases = false;  // measure Statistics::seconds_* (costs two clock reads an event)
+};
+
+/// A sphere body. Only `radius` has no useful default.
+struct BodyDef {
+  double radius = 0.5;                 // m
+  Vec3 position = Vec3::Zero();        // centre, m
+  Vec3 velocity = Vec3::Zero();        // m/s
+  Vec3 thrust = Vec3::Zero();          // acceleration of its own (App. F.3), added to gravity
+  double mass = 1.0;                   // kg
+  double restitution = 1.0;            // 1 = elastic; the collision uses the product of the two
+  Envelope envelope;                   // growth of the bounding sphere beyond the body (App. F)
+};
+
+/// A body's state evaluated from its path at some time.
+struct BodyState {
+  Vec3 position = Vec3::Zero();
+  Vec3 velocity = Vec3::Zero();
+  Vec3 acceleration = Vec3::Zero();
+  double radius = 0.0;
+  double mass = 0.0;
+  std::uint32_t version = 0;  // number of path changes (segments) so far
+};
+
+/// A resolved collision, reported to OnCollision callbacks.
+struct CollisionEvent {
+  double time = 0.0;
+  BodyId a;
+  BodyId b;              // invalid for a wall collision
+  int wall = -1;         // 0..5 = -x,+x,-y,+y,-z,+z wall, or -1
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = Vec3::Zero();   // unit, from a towards b (towards the wall)
+  double impulse = 0.0;         // N s along the normal
+};
+
+/// Owns the bodies and runs the event loop: the sparse phase of the thesis (§3-§4) for
+/// spheres. Nothing is computed between events; a body's state at any time comes from its path.
+class World {
+ public:
+  explicit World(const WorldSettings& settings = {});
+  ~World();
+  World(World&&) noexcept;
+  World& operator=(World&&) noexcept;
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Adds a body at the current time. Refused, with nothing changed, when a value is NaN/Inf,
+  /// radius or mass <= 0, restitution outside [0, 1], an envelope coefficient < 0, the body lies
+  /// outside the container, or it overlaps a body already present.
+  Result<BodyId> AddBody(const BodyDef& def);
+
+  /// Processes every event with time <= t, then sets the clock to t. Fails (clock at the last
+  /// processed event) when the event loop stalls, see WorldSettings::stall_event_limit.
+  Status AdvanceTo(double t);
+
+  /// The state of `id` at time t >= Time() (or any t within its current segment).
+  BodyState StateAt(BodyId id, double t) const;
+
+  double Time() const;
+  std::size_t BodyCount() const;
+  bool IsValid(BodyId id) const;
+  BodyId IdOf(std::uint32_t index) const;
+
+  /// Called after every resolved collision (body-body and body-wall), in event order.
+  void OnCollision(std::function<void(const CollisionEvent&)> callback);
+
+  const Statistics& Stats() const;
+  const WorldSettings& Settings() const;
+
+  double KineticEnergy() const;   // at Time()
+  Vec3 Momentum() const;          // at Time()
+  /// The deepest overlap of two bodies (or a body and a wall) seen at any processed event, m.
+  double MaxPenetration() const;
+  /// Checks at Time() that no two bodies overlap beyond the contact tolerance and that every
+  /// body is inside the container (O(N^2) for small worlds, through the grid otherwise).
+  Status Validate() const;
+  /// Bytes of memory held by the World's data structures.
+  std::size_t MemoryBytes() const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sparsedyn

@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: MIT
+#include "scenes/gas.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "scenes/random.hpp"
+
+namespace sparsedyn::scenes {
+namespace {
+
+// Above this packing random sequential placement gets slow (its jamming limit is ~0.38).
+constexpr double kRandomPlacementMaxPacking = 0.25;
+// Placement attempts per sphere before random placement gives up for the lattice start.
+constexpr int kAttemptsPerSphere = 200;
+
+// Random sequential placement with a periodic cell list of cells >= one diameter.
+bool PlaceAtRandom(const GasOptions& o, double side, Random& random, std::vector<Vec3>& out) {
+  const double diameter = 2 * o.radius;
+  const int cells = std::max(1, static_cast<int>(side / diameter));
+  const double cell = side / cells;
+  std::vector<std::vector<std::uint32_t>> grid(static_cast<std::size_t>(cells) * cells * cells);
+  auto index = [cells](int x, int y, int z) {
+    auto wrap = [cells](int v) { return ((v % cells) + cells) % cells; };
+    return (static_cast<std::size_t>(wrap(z)) * cells + wrap(y)) * cells + wrap(x);
+  };
+  auto free_at = [&](const Vec3& p) {
+    const int cx = static_cast<int>(p[0] / cell), cy = static_cast<int>(p[1] / cell),
+              cz = static_cast<int>(p[2] / cell);
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          for (const std::uint32_t j : grid[index(cx + dx, cy + dy, cz + dz)]) {
+            Vec3 d = out[j] - p;
+            if (o.periodic) {
+              for (int k = 0; k < 3; ++k) d[k] -= side * std::round(d[k] / side);
+            }
+            if (d.squaredNorm() < diameter * diameter) return false;
+          }
+        }
+      }
+    }
+    return true;
+  };
+  const double lo = o.periodic ? 0.0 : o.radius;
+  const double hi = o.periodic ? side : side - o.radius;
+  std::uint64_t attempts = 0;
+  const std::uint64_t max_attempts = static_cast<std::uint64_t>(kAttemptsPerSphere) * o.n;
+  while (out.size() < o.n) {
+    if (++attempts > max_attempts) return false;
+    Vec3 p(random.Uniform(lo, hi), random.Uniform(lo, hi), random.Uniform(lo, hi));
+    if (!free_at(p)) continue;
+    const int cx = static_cast<int>(p[0] / cell), cy = static_cast<int>(p[1] / cell),
+              cz = static_cast<int>(p[2] / cell);
+    grid[index(cx, cy, cz)].push_back(static_cast<std::uint32_t>(out.size()));
+    out.push_back(p);
+  }
+  return true;
+}
+
+// A random subset of the sites of a simple cubic lattice filling the box.
+Result<std::vector<Vec3>> PlaceOnLattice(const GasOptions& o, double side, Random& random) {
+  const auto m = static_cast<std::uint32_t>(std::ceil(std::cbrt(static_cast<double>(o.n)) - 1e-9));
+  const double spacing = side / m;
+  const double usable = o.periodic ? spacing : (side - 2 * o.radius) / std::max(1u, m - 1);
+  if (std::min(spacing, m > 1 ? usable : spacing) < 2 * o.radius) {
+    return Error{"gas: packing " + std::to_string(o.packing) +
+                 " is too high to place the spheres without overlap"};
+  }
+  std::vector<std::uint32_t> sites(static_cast<std::size_t>(m) * m * m);
+  std::iota(sites.begin(), sites.end(), 0u);
+  for (std::uint32_t i = 0; i < o.n; ++i) {  // partial Fisher-Yates: the first n are the pick
+    std::swap(sites[i], sites[i + random.Below(sites.size() - i)]);
+  }
+  std::vector<Vec3> out;
+  out.reserve(o.n);
+  for (std::uint32_t i = 0; i < o.n; ++i) {
+    const std::uint32_t s = sites[i];
+    const Vec3 c(s % m, (s / m) % m, s / (m * m));
+    out.push_back(o.periodic ? Vec3((c.array() + 0.5) * spacing)
+                             : Vec3(o.radius + c.array() * usable));
+  }
+  return out;
+}
+
+}  // namespace
+
+double GasBoxSide(const GasOptions& options) {
+  const double sphere_volume = 4.0 / 3.0 * M_PI * std::pow(options.radius, 3);
+  return std::cbrt(options.n * sphere_volume / options.packing);
+}
+
+Result<std::vector<BodyDef>> MakeGasBodies(const GasOptions& options) {
+  if (options.n == 0) return Error{"gas: n must be >= 1"};
+  if (!(options.packing > 0 && options.packing < M_PI / 6)) {
+    return Error{"gas: packing fraction must be in (0, pi/6), got " +
+                 std::to_string(options.packing)};
+  }
+  const double side = GasBoxSide(options);
+  Random random(options.seed);
+
+  std::vector<Vec3> positions;
+  positions.reserve(options.n);
+  bool placed = false;
+  if (options.packing <= kRandomPlacementMaxPacking) {
+    placed = PlaceAtRandom(options, side, random, positions);
+  }
+  if (!placed) {
+    Result<std::vector<Vec3>> lattice = PlaceOnLattice(options, side, random);
+    if (!lattice) return lattice.error();
+    positions = std::move(*lattice);
+  }
+
+  // Maxwell-Boltzmann velocities, zero total momentum, scaled to exactly kT per degree of
+  // freedom (3N - 3 of them once the momentum is fixed).
+  std::vector<Vec3> velocities(options.n);
+  const double sigma_v = std::sqrt(options.kT / options.mass);
+  Vec3 mean = Vec3::Zero();
+  for (Vec3& v : velocities) {
+    v = Vec3(random.Normal(), random.Normal(), random.Normal()) * sigma_v;
+    mean += v;
+  }
+  mean /= options.n;
+  double kinetic = 0;
+  for (Vec3& v : velocities) {
+    if (options.n > 1) v -= mean;
+    kinetic += 0.5 * options.mass * v.squaredNorm();
+  }
+  const double dof = options.n > 1 ? 3.0 * options.n - 3.0 : 3.0;
+  const double scale = kinetic > 0 ? std::sqrt(0.5 * dof * options.kT / kinetic) : 1.0;
+
+  std::vector<BodyDef> bodies(options.n);
+  for (std::uint32_t i = 0; i < options.n; ++i) {
+    bodies[i].radius = options.radius;
+    bodies[i].mass = options.mass;
+    bodies[i].restitution = options.restitution;
+    bodies[i].position = positions[i];
+    bodies[i].velocity = velocities[i] * scale;
+  }
+  return bodies;
+}
+
+Result<World> MakeGas(const GasOptions& options, WorldSettings settings) {
+  Result<std::vector<BodyDef>> bodies = MakeGasBodies(options);
+  if (!bodies) return bodies.error();
+  const double side = GasBoxSide(options);
+  settings.container = options.periodic ? Container::PeriodicBox(Vec3::Zero(), Vec3::Constant(side))
+                                        : Container::WalledBox(Vec3::Zero(), Vec3::Constant(side));
+  World world(settings);
+  for (const BodyDef& def : *bodies) {
+    Result<BodyId> id = world.AddBody(def);
+    if (!id) return id.error();
+  }
+  return world;
+}
+
+}  // namespace sparsedyn::scenes

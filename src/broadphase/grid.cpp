@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+#include "broadphase/grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sparsedyn/assert.hpp"
+
+namespace sparsedyn {
+namespace {
+
+// A cell must exceed the largest interaction distance by a relative margin that covers the
+// round-off of crossing times (a crossing handled a few ulps early or late).
+constexpr double kCellSlack = 1e-9;
+
+std::array<int, 3> CellCounts(const Grid::Config& config) {
+  std::array<int, 3> n{};
+  const double size = std::max(config.min_cell_size * (1 + kCellSlack), config.target_cell_size);
+  for (int k = 0; k < 3; ++k) {
+    const double length = config.hi[k] - config.lo[k];
+    n[k] = std::max(1, static_cast<int>(std::floor(length / size)));
+    // Never a cell smaller than the interaction distance, even after the floor above.
+    while (n[k] > 1 && length / n[k] < config.min_cell_size * (1 + kCellSlack)) --n[k];
+  }
+  return n;
+}
+
+}  // namespace
+
+bool Grid::Feasible(const Config& config) {
+  if (!config.periodic) return true;
+  const std::array<int, 3> n = CellCounts(config);
+  return n[0] >= 3 && n[1] >= 3 && n[2] >= 3;
+}
+
+Grid::Grid(const Config& config, std::uint32_t element_capacity)
+    : lo_(config.lo), length_(config.hi - config.lo), periodic_(config.periodic) {
+  n_ = CellCounts(config);
+  for (int k = 0; k < 3; ++k) size_[k] = length_[k] / n_[k];
+  head_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2], kNoIndex);
+  next_.assign(element_capacity, kNoIndex);
+  prev_.assign(element_capacity, kNoIndex);
+  cell_of_.assign(element_capacity, kNoIndex);
+}
+
+std::uint32_t Grid::CellAt(const Vec3& p) const {
+  std::array<int, 3> c{};
+  for (int k = 0; k < 3; ++k) {
+    const int i = static_cast<int>(std::floor((p[k] - lo_[k]) / size_[k]));
+    c[k] = std::clamp(i, 0, n_[k] - 1);
+  }
+  return Index(c);
+}
+
+void Grid::Insert(std::uint32_t e, const Vec3& p) {
+  if (e >= cell_of_.size()) {
+    const std::size_t size = std::max<std::size_t>(e + 1, cell_of_.size() * 2);
+    next_.resize(size, kNoIndex);
+    prev_.resize(size, kNoIndex);
+    cell_of_.resize(size, kNoIndex);
+  }
+  const std::uint32_t cell = CellAt(p);
+  cell_of_[e] = cell;
+  prev_[e] = kNoIndex;
+  next_[e] = head_[cell];
+  if (head_[cell] != kNoIndex) prev_[head_[cell]] = e;
+  head_[cell] = e;
+}
+
+void Grid::Remove(std::uint32_t e) {
+  const std::uint32_t cell = cell_of_[e];
+  SPARSEDYN_ASSERT(cell != kNoIndex, "Grid::Remove of an element not in the grid");
+  if (prev_[e] != kNoIndex) {
+    next_[prev_[e]] = next_[e];
+  } else {
+    head_[cell] = next_[e];
+  }
+  if (next_[e] != kNoIndex) prev_[next_[e]] = prev_[e];
+  cell_of_[e] = kNoIndex;
+}
+
+double Grid::PredictCrossing(const Mover& m, std::uint32_t cell, int& axis,
+                             int& direction) const {
+  const std::array<int, 3> c = Coordinates(cell);
+  double best = kInfinity;
+  axis = 0;
+  direction = 1;
+  for (int k = 0; k < 3; ++k) {
+    // Faces on the outside of a walled box are not crossings: the walls keep the centre in.
+    const bool first = c[k] == 0;
+    const bool last = c[k] == n_[k] - 1;
+    const double lo = (first && !periodic_) ? -kInfinity : lo_[k] + c[k] * size_[k];
+    const double hi = (last && !periodic_) ? kInfinity : lo_[k] + (c[k] + 1) * size_[k];
+    int dir = 1;
+    const double dt = SlabExitTime(m.p[k], m.v[k], m.a[k], lo, hi, dir);
+    if (dt < best) {
+      best = dt;
+      axis = k;
+      direction = dir;
+    }
+  }
+  return best;
+}
+
+Vec3 Grid::Move(std::uint32_t e, int axis, int direction) {
+  std::array<int, 3> c = Coordinates(cell_of_[e]);
+  c[axis] += direction;
+  Vec3 shift = Vec3::Zero();
+  if (c[axis] < 0) {
+    c[axis] += n_[axis];
+    shift[axis] = length_[axis];
+  } else if (c[axis] >= n_[axis]) {
+    c[axis] -= n_[axis];
+    shift[axis] = -length_[axis];
+  }
+  SPARSEDYN_ASSERT(c[axis] >= 0 && c[axis] < n_[axis], "Grid::Move outside a walled grid");
+  Remove(e);
+  const std::uint32_t cell = Index(c);
+  cell_of_[e] = cell;
+  prev_[e] = kNoIndex;
+  next_[e] = head_[cell];
+  if (head_[cell] != kNoIndex) prev_[head_[cell]] = e;
+  head_[cell] = e;
+  return shift;
+}
+
+std::size_t Grid::MemoryBytes() const {
+  return (head_.capacity() + next_.capacity() + prev_.capacity() + cell_of_.capacity()) *
+         sizeof(std::uint32_t);
+}
+
+}  // namespace sparsedyn

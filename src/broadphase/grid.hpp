@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "broadphase/cell_crossing.hpp"
+#include "sparse/mover.hpp"
+#include "sparsedyn/types.hpp"
+
+namespace sparsedyn {
+
+/// A uniform grid over a box with cell-crossing events (the standard event-driven cell list,
+/// e.g. Rapaport's book and DynamO): an element is compared only with the elements of the 27
+/// cells around its own, which is exact as long as the cell side is at least the largest
+/// interaction distance (sum of two bounding radii). When an element crosses into a new cell
+/// it only has to be compared with the 9 cells that became adjacent (O(1) work per event on
+/// average). In a periodic box the grid wraps and reports the image shift of each neighbour.
+class Grid {
+ public:
+  struct Config {
+    Vec3 lo = Vec3::Zero();
+    Vec3 hi = Vec3::Ones();
+    bool periodic = false;
+    double min_cell_size = 1.0;   // the largest interaction distance; cells are never smaller
+    double target_cell_size = 1.0;  // preferred size (>= min) chosen for speed
+  };
+
+  /// Whether a grid can be built: a periodic grid needs >= 3 cells per axis so that the 27
+  /// neighbours are distinct cells.
+  static bool Feasible(const Config& config);
+
+  Grid() = default;
+  Grid(const Config& config, std::uint32_t element_capacity);
+
+  /// Places element `e` (centre `p`, inside the box up to round-off) in its cell.
+  void Insert(std::uint32_t e, const Vec3& p);
+  void Remove(std::uint32_t e);
+  std::uint32_t CellOf(std::uint32_t e) const { return cell_of_[e]; }
+
+  /// dt until the centre of `m` leaves the cell `cell` (faces on the outer walls of a walled box
+  /// never count). Sets `axis` and `direction` (+1/-1) of the face it leaves through.
+  double PredictCrossing(const Mover& m, std::uint32_t cell, int& axis, int& direction) const;
+
+  /// Moves element `e` to the neighbouring cell across (axis, direction). Returns the shift to
+  /// add to its position to keep it inside a periodic box (zero unless it wrapped).
+  Vec3 Move(std::uint32_t e, int axis, int direction);
+
+  /// Calls fn(j, shift_j) for every element j != e in the 27 cells around e's cell; shift_j is
+  /// the periodic image offset to add to j's position.
+  template <typename Fn>
+  void ForEachNeighbor(std::uint32_t e, Fn&& fn) const {
+    const std::array<int, 3> c = Coordinates(cell_of_[e]);
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          VisitCell(e, {c[0] + dx, c[1] + dy, c[2] + dz}, fn);
+        }
+      }
+    }
+  }
+
+  /// Calls fn(j, shift_j) for the elements in the 9 cells that became adjacent to e when it
+  /// moved into its current cell across (axis, direction).
+  template <typename Fn>
+  void ForEachNewNeighbor(std::uint32_t e, int axis, int direction, Fn&& fn) const {
+    const std::array<int, 3> c = Coordinates(cell_of_[e]);
+    const int u = (axis + 1) % 3;
+    const int w = (axis + 2) % 3;
+    std::array<int, 3> at{};
+    at[axis] = c[axis] + direction;
+    for (int du = -1; du <= 1; ++du) {
+      for (int dw = -1; dw <= 1; ++dw) {
+        at[u] = c[u] + du;
+        at[w] = c[w] + dw;
+        VisitCell(e, at, fn);
+      }
+    }
+  }
+
+  const std::array<int, 3>& Dimensions() const { return n_; }
+  double CellSize(int axis) const { return size_[axis]; }
+  std::size_t MemoryBytes() const;
+
+ private:
+  std::array<int, 3> Coordinates(std::uint32_t cell) const {
+    const int x = static_cast<int>(cell % static_cast<std::uint32_t>(n_[0]));
+    const std::uint32_t rest = cell / static_cast<std::uint32_t>(n_[0]);
+    return {x, static_cast<int>(rest % static_cast<std::uint32_t>(n_[1])),
+            static_cast<int>(rest / static_cast<std::uint32_t>(n_[1]))};
+  }
+  std::uint32_t Index(const std::array<int, 3>& c) const {
+    return static_cast<std::uint32_t>((c[2] * n_[1] + c[1]) * n_[0] + c[0]);
+  }
+  std::uint32_t CellAt(const Vec3& p) const;
+
+  template <typename Fn>
+  void VisitCell(std::uint32_t e, std::array<int, 3> at, Fn& fn) const {
+    Vec3 shift = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) {
+      if (at[k] < 0) {
+        if (!periodic_) return;
+        at[k] += n_[k];
+        shift[k] = -length_[k];
+      } else if (at[k] >= n_[k]) {
+        if (!periodic_) return;
+        at[k] -= n_[k];
+        shift[k] = length_[k];
+      }
+    }
+    for (std::uint32_t j = head_[Index(at)]; j != kNoIndex; j = next_[j]) {
+      if (j != e) fn(j, shift);
+    }
+  }
+
+  Vec3 lo_ = Vec3::Zero();
+  Vec3 length_ = Vec3::Ones();
+  std::array<double, 3> size_{};
+  std::array<int, 3> n_{1, 1, 1};
+  bool periodic_ = false;
+  std::vector<std::uint32_t> head_;     // first element of each cell
+  std::vector<std::uint32_t> next_;     // intrusive doubly linked lists of each cell
+  std::vector<std::uint32_t> prev_;
+  std::vector<std::uint32_t> cell_of_;
+};
+
+}  // namespace sparsedyn

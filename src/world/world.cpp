@@ -1,0 +1,325 @@
+// SPDX-License-Identifier: MIT
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "world/world_impl.hpp"
+
+#include "world/overlap_index.hpp"
+
+namespace sparsedyn {
+namespace {
+
+std::string Format(double x) {
+  std::ostringstream out;
+  out.precision(17);
+  out << x;
+  return out.str();
+}
+
+
+// Checks one body definition in isolation; the message names the body index and the field.
+std::optional<Error> CheckDefinition(const BodyDef& def, std::size_t index) {
+  const std::string body = "body " + std::to_string(index) + ": ";
+  if (!std::isfinite(def.radius) || def.radius <= 0) {
+    return Error{body + "radius must be finite and > 0, got " + Format(def.radius)};
+  }
+  if (!std::isfinite(def.mass) || def.mass <= 0) {
+    return Error{body + "mass must be finite and > 0, got " + Format(def.mass)};
+  }
+  if (!std::isfinite(def.restitution) || def.restitution < 0 || def.restitution > 1) {
+    return Error{body + "restitution must be in [0, 1], got " + Format(def.restitution)};
+  }
+  const struct {
+    const char* name;
+    const Vec3& value;
+  } vectors[] = {{"position", def.position}, {"velocity", def.velocity}, {"thrust", def.thrust}};
+  for (const auto& [name, value] : vectors) {
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(value[k])) {
+        return Error{body + name + "[" + std::to_string(k) + "] must be finite, got " +
+                     Format(value[k])};
+      }
+    }
+  }
+  const double envelope[] = {def.envelope.e0, def.envelope.e1, def.envelope.e2};
+  for (int k = 0; k < 3; ++k) {
+    if (!std::isfinite(envelope[k]) || envelope[k] < 0) {
+      return Error{body + "envelope.e" + std::to_string(k) + " must be finite and >= 0, got " +
+                   Format(envelope[k])};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+WallPlane BoxWall(const Container& box, int wall) {
+  const int axis = wall / 2;
+  Vec3 n = Vec3::Zero();
+  if (wall % 2 == 0) {
+    n[axis] = 1.0;  // the low wall: inside is x >= lo
+    return {n, box.lo[axis]};
+  }
+  n[axis] = -1.0;  // the high wall: inside is -x >= -hi
+  return {n, -box.hi[axis]};
+}
+
+const char* EventKindName(int k) { return kEventKindNames.at(static_cast<std::size_t>(k)).data(); }
+
+World::Impl::Impl(const WorldSettings& settings)
+    : settings_(settings),
+      overlap_index_(settings.container.lo,
+                     settings.container.kind == Container::Kind::kPeriodicBox
+                         ? Vec3(settings.container.hi - settings.container.lo)
+                         : Vec3::Zero()) {}
+
+Vec3 World::Impl::MinimumImage(Vec3 d) const {
+  if (settings_.container.kind != Container::Kind::kPeriodicBox) return d;
+  const Vec3 length = settings_.container.hi - settings_.container.lo;
+  for (int k = 0; k < 3; ++k) d[k] -= length[k] * std::round(d[k] / length[k]);
+  return d;
+}
+
+Vec3 World::Impl::WrapIntoBox(Vec3 p) const {
+  if (settings_.container.kind != Container::Kind::kPeriodicBox) return p;
+  const Container& box = settings_.container;
+  for (int k = 0; k < 3; ++k) {
+    const double length = box.hi[k] - box.lo[k];
+    p[k] -= length * std::floor((p[k] - box.lo[k]) / length);
+  }
+  return p;
+}
+
+std::optional<std::uint32_t> World::Impl::FindOverlap(const Vec3& p, double radius) const {
+  auto overlaps = [&](const Vec3& q, double r) {
+    const Vec3 d = MinimumImage(q - p);
+    const double reach = radius + r;
+    return d.squaredNorm() < reach * reach * (1 - 1e-12);
+  };
+  std::optional<std::uint32_t> found;
+  if (!started_) {
+    // Before the start every body is still at its initial position: use the spatial hash.
+    overlap_index_.ForEachNear(p, radius, [&](std::uint32_t j, const Vec3& q, double r) {
+      if (overlaps(q, r) && (!found || j < *found)) found = j;
+    });
+    return found;
+  }
+  // Bodies added while running (rare) are compared with every body at the current time.
+  for (std::uint32_t j = 0; j < paths_.size(); ++j) {
+    if (overlaps(paths_[j].PositionAt(now_), radius_[j])) return j;
+  }
+  return std::nullopt;
+}
+
+Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
+  const std::size_t index = paths_.size();
+  if (std::optional<Error> error = CheckDefinition(def, index)) return *error;
+  const std::string body = "body " + std::to_string(index) + ": ";
+
+  // Inside the container.
+  const Container& box = settings_.container;
+  if (box.kind == Container::Kind::kWalledBox) {
+    for (int k = 0; k < 3; ++k) {
+      if (def.position[k] - def.radius < box.lo[k] || def.position[k] + def.radius > box.hi[k]) {
+        return Error{body + "position[" + std::to_string(k) + "] = " + Format(def.position[k]) +
+                     " puts the sphere (radius " + Format(def.radius) +
+                     ") outside the walled box [" + Format(box.lo[k]) + ", " +
+                     Format(box.hi[k]) + "]"};
+      }
+    }
+  } else if (box.kind == Container::Kind::kPeriodicBox) {
+    for (int k = 0; k < 3; ++k) {
+      if (def.position[k] < box.lo[k] || def.position[k] >= box.hi[k]) {
+        return Error{body + "position[" + std::to_string(k) + "] = " + Format(def.position[k]) +
+                     " is outside the periodic box [" + Format(box.lo[k]) + ", " +
+                     Format(box.hi[k]) + ")"};
+      }
+      if (2 * def.radius >= 0.5 * (box.hi[k] - box.lo[k])) {
+        return Error{body + "radius " + Format(def.radius) +
+                     " is too large for the periodic box (diameter must be < half the box)"};
+      }
+    }
+  }
+  if (std::optional<std::uint32_t> other = FindOverlap(def.position, def.radius)) {
+    return Error{body + "overlaps body " + std::to_string(*other) + " at the start (t = " +
+                 Format(now_) + ")"};
+  }
+
+  // Accepted: from here on nothing can fail.
+  paths_.push_back(Path{def.position, def.velocity, settings_.gravity + def.thrust, now_});
+  if (!started_) overlap_index_.Add(def.position, def.radius);
+  radius_.push_back(def.radius);
+  inv_mass_.push_back(1.0 / def.mass);
+  restitution_.push_back(def.restitution);
+  if (!def.envelope.IsZero() && !has_envelopes_) {
+    has_envelopes_ = true;
+    envelope_.resize(index);
+  }
+  if (has_envelopes_) envelope_.push_back(def.envelope);
+  version_.push_back(0);
+  event_.emplace_back();
+  candidate_.emplace_back();
+  const bool larger = def.radius > max_radius_;
+  max_radius_ = std::max(max_radius_, def.radius);
+  if (started_) {
+    // A bigger body or the first envelope can change the broad phase: rebuild it.
+    if (larger || (has_envelopes_ && grid_)) {
+      Start();
+    } else {
+      const auto i = static_cast<std::uint32_t>(index);
+      if (grid_) grid_->Insert(i, def.position);
+      if (all_pairs_) all_pairs_->Insert(i, def.position);
+      PredictFull(i);
+    }
+  }
+  return BodyId{static_cast<std::uint32_t>(index), 0};
+}
+
+void World::Impl::Start() {
+  started_ = true;
+  overlap_index_.Clear();
+  const auto n = static_cast<std::uint32_t>(paths_.size());
+  const Container& box = settings_.container;
+  grid_.reset();
+  all_pairs_.reset();
+  queue_.Clear();
+
+  // Rebase every path at the current time so that cells and predictions start from now.
+  for (std::uint32_t i = 0; i < n; ++i) {
+    paths_[i] = paths_[i].RebasedAt(now_);
+    paths_[i].p0 = WrapIntoBox(paths_[i].p0);
+  }
+
+  // The grid needs a box and bounded element radii (an envelope grows without bound).
+  const bool boxed = box.kind != Container::Kind::kOpen;
+  if (settings_.broadphase == Broadphase::kGrid && boxed && !has_envelopes_ && n > 0) {
+    Grid::Config config;
+    config.lo = box.lo;
+    config.hi = box.hi;
+    config.periodic = box.kind == Container::Kind::kPeriodicBox;
+    config.min_cell_size = 2 * max_radius_;
+    const Vec3 length = box.hi - box.lo;
+    const double volume = length.prod();
+    config.target_cell_size =
+        std::cbrt(volume / (std::max(settings_.grid_cells_per_body, 1e-6) * n));
+    if (Grid::Feasible(config)) grid_.emplace(config, n);
+  }
+  if (!grid_) {
+    AllPairs::Config config;
+    config.lo = box.lo;
+    config.hi = box.hi;
+    config.periodic = box.kind == Container::Kind::kPeriodicBox;
+    all_pairs_.emplace(config, n);
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (grid_) grid_->Insert(i, paths_[i].p0);
+    if (all_pairs_) all_pairs_->Insert(i, paths_[i].p0);
+  }
+  for (std::uint32_t i = 0; i < n; ++i) PredictFull(i);
+}
+
+BodyState World::Impl::StateAt(std::uint32_t i, double t) const {
+  const Path& path = paths_[i];
+  return BodyState{WrapIntoBox(path.PositionAt(t)), path.VelocityAt(t), path.a, radius_[i],
+                   1.0 / inv_mass_[i], version_[i]};
+}
+
+double World::Impl::KineticEnergy() const {
+  double energy = 0;
+  for (std::size_t i = 0; i < paths_.size(); ++i) {
+    energy += 0.5 / inv_mass_[i] * paths_[i].VelocityAt(now_).squaredNorm();
+  }
+  return energy;
+}
+
+Vec3 World::Impl::Momentum() const {
+  Vec3 momentum = Vec3::Zero();
+  for (std::size_t i = 0; i < paths_.size(); ++i) {
+    momentum += paths_[i].VelocityAt(now_) / inv_mass_[i];
+  }
+  return momentum;
+}
+
+Status World::Impl::Validate() const {
+  const auto n = static_cast<std::uint32_t>(paths_.size());
+  const double tolerance = settings_.contact_tolerance;
+  auto check_pair = [&](std::uint32_t i, std::uint32_t j) -> std::optional<Error> {
+    const Vec3 d = MinimumImage(paths_[j].PositionAt(now_) - paths_[i].PositionAt(now_));
+    const double reach = radius_[i] + radius_[j];
+    const double gap = d.norm() - reach;
+    if (gap < -tolerance * reach) {
+      return Error{"bodies " + std::to_string(i) + " and " + std::to_string(j) +
+                   " overlap by " + Format(-gap) + " at t = " + Format(now_)};
+    }
+    return std::nullopt;
+  };
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (grid_) {
+      std::optional<Error> error;
+      grid_->ForEachNeighbor(i, [&](std::uint32_t j, const Vec3&) {
+        if (!error && j > i) error = check_pair(i, j);
+      });
+      if (error) return *error;
+    } else {
+      for (std::uint32_t j = i + 1; j < n; ++j) {
+        if (std::optional<Error> error = check_pair(i, j)) return *error;
+      }
+    }
+    if (settings_.container.kind == Container::Kind::kWalledBox) {
+      const Vec3 p = paths_[i].PositionAt(now_);
+      for (int w = 0; w < 6; ++w) {
+        const WallPlane plane = BoxWall(settings_.container, w);
+        const double gap = plane.normal.dot(p) - plane.offset - radius_[i];
+        if (gap < -tolerance * radius_[i]) {
+          return Error{"body " + std::to_string(i) + " is " + Format(-gap) + " beyond wall " +
+                       std::to_string(w) + " at t = " + Format(now_)};
+        }
+      }
+    }
+  }
+  return Status::Ok();
+}
+
+std::size_t World::Impl::MemoryBytes() const {
+  std::size_t bytes = paths_.capacity() * sizeof(Path) +
+                      (radius_.capacity() + inv_mass_.capacity() + restitution_.capacity()) *
+                          sizeof(double) +
+                      envelope_.capacity() * sizeof(Envelope) +
+                      version_.capacity() * sizeof(std::uint32_t) +
+                      event_.capacity() * sizeof(Event) + candidate_.capacity() * sizeof(Candidate) +
+                      queue_.MemoryBytes() + engagement_queue_.MemoryBytes();
+  if (grid_) bytes += grid_->MemoryBytes();
+  if (all_pairs_) bytes += all_pairs_->MemoryBytes();
+  return bytes;
+}
+
+// --- World: thin forwarding to Impl ---
+
+World::World(const WorldSettings& settings) : impl_(std::make_unique<Impl>(settings)) {}
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+Result<BodyId> World::AddBody(const BodyDef& def) { return impl_->AddBody(def); }
+Status World::AdvanceTo(double t) { return impl_->AdvanceTo(t); }
+BodyState World::StateAt(BodyId id, double t) const {
+  SPARSEDYN_ASSERT(IsValid(id), "StateAt: invalid BodyId");
+  return impl_->StateAt(id.index, t);
+}
+double World::Time() const { return impl_->now_; }
+std::size_t World::BodyCount() const { return impl_->paths_.size(); }
+bool World::IsValid(BodyId id) const { return id.index < impl_->paths_.size(); }
+BodyId World::IdOf(std::uint32_t index) const { return BodyId{index, 0}; }
+void World::OnCollision(std::function<void(const CollisionEvent&)> callback) {
+  impl_->on_collision_ = std::move(callback);
+}
+const Statistics& World::Stats() const { return impl_->stats_; }
+const WorldSettings& World::Settings() const { return impl_->settings_; }
+double World::KineticEnergy() const { return impl_->KineticEnergy(); }
+Vec3 World::Momentum() const { return impl_->Momentum(); }
+double World::MaxPenetration() const { return impl_->max_penetration_; }
+Status World::Validate() const { return impl_->Validate(); }
+std::size_t World::MemoryBytes() const { return impl_->MemoryBytes(); }
+
+}  // namespace sparsedyn

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "broadphase/all_pairs.hpp"
+#include "broadphase/grid.hpp"
+#include "events/engagements.hpp"
+#include "events/event.hpp"
+#include "events/heap_queue.hpp"
+#include "motion/path.hpp"
+#include "sparse/meeting.hpp"
+#include "sparsedyn/world.hpp"
+#include "world/overlap_index.hpp"
+
+namespace sparsedyn {
+
+/// The World's state and event loop. Split over world.cpp (API, input checks, start-up),
+/// world_predict.cpp (the sparse phase: predictions) and world_loop.cpp (the dispatcher and the
+/// event handlers).
+class World::Impl {
+ public:
+  explicit Impl(const WorldSettings& settings);
+
+  // --- API (world.cpp) ---
+  Result<BodyId> AddBody(const BodyDef& def);
+  BodyState StateAt(std::uint32_t i, double t) const;
+  double KineticEnergy() const;
+  Vec3 Momentum() const;
+  Status Validate() const;
+  std::size_t MemoryBytes() const;
+
+  // --- event loop (world_loop.cpp) ---
+  Status AdvanceTo(double t);
+
+  WorldSettings settings_;
+  Statistics stats_;
+  std::function<void(const CollisionEvent&)> on_collision_;
+  double now_ = 0.0;
+  double max_penetration_ = 0.0;
+
+  // Per-element state (structure of arrays, indexed by body index).
+  std::vector<Path> paths_;
+  std::vector<double> radius_;
+  std::vector<double> inv_mass_;
+  std::vector<double> restitution_;
+  std::vector<Envelope> envelope_;          // empty unless some body has an envelope
+  std::vector<std::uint32_t> version_;      // path changes so far
+  std::vector<Event> event_;                // each element's one outstanding prediction (§4)
+  struct Candidate {                        // the earliest meeting found by the last prediction
+    double time = kInfinity;
+    std::uint32_t target = kNoIndex;
+    std::uint32_t target_version = 0;
+  };
+  std::vector<Candidate> candidate_;
+  Vec3 thrust_default_ = Vec3::Zero();
+
+  bool started_ = false;
+  bool has_envelopes_ = false;
+  double max_radius_ = 0.0;
+  std::optional<Grid> grid_;
+  std::optional<AllPairs> all_pairs_;
+  HeapQueue<4> queue_;              // one slot per element
+  HeapQueue<4> engagement_queue_;   // one slot per engagement
+  Engagements engagements_;
+  OverlapIndex overlap_index_;  // bodies added before the start, for AddBody's overlap check
+
+ private:
+  // --- start-up and checks (world.cpp) ---
+  void Start();
+  std::optional<std::uint32_t> FindOverlap(const Vec3& p, double radius) const;
+  Vec3 MinimumImage(Vec3 d) const;
+  Vec3 WrapIntoBox(Vec3 p) const;
+
+  // --- predictions (world_predict.cpp) ---
+  Mover MoverOf(std::uint32_t i, double t) const;
+  Mover BodyMoverOf(std::uint32_t i, double t) const;  // the body itself, without envelope
+  void PredictFull(std::uint32_t i);
+  void PredictAfterCrossing(std::uint32_t i, int axis, int direction);
+  template <typename Broadphase>
+  void PredictWith(const Broadphase& broadphase, std::uint32_t i);
+  template <typename Broadphase>
+  void PredictNewCellsWith(const Broadphase& broadphase, std::uint32_t i, int axis, int direction);
+  void ConsiderMeeting(std::uint32_t i, const Mover& mi, std::uint32_t j, const Vec3& shift,
+                       Candidate& best);
+  void FinishPrediction(std::uint32_t i, const Mover& mi, const Candidate& best);
+  double PredictWall(const Mover& mi, std::uint8_t& wall) const;
+  void Schedule(std::uint32_t i, const Event& event);
+  void PredictEngagement(std::uint32_t k);
+  void PredictEngagementsOf(std::uint32_t i);
+
+  // --- handlers (world_loop.cpp) ---
+  void Dispatch(const QueueTop& top, bool engagement);
+  void HandleSphereMeet(std::uint32_t i);
+  void HandleWallMeet(std::uint32_t i);
+  void HandleCellCrossing(std::uint32_t i);
+  void HandleEngagement(std::uint32_t k);
+  void Collide(std::uint32_t i, std::uint32_t j);
+  void SetVelocity(std::uint32_t i, const Vec3& v);
+  bool TouchingAndApproaching(std::uint32_t i, std::uint32_t j, Vec3& normal, double& gap) const;
+  void NotePenetration(double gap);
+
+  friend class World;
+};
+
+/// Wall planes of a walled box: inward unit normal n and offset d (n.x >= d inside).
+struct WallPlane {
+  Vec3 normal;
+  double offset;
+};
+WallPlane BoxWall(const Container& box, int wall);
+
+}  // namespace sparsedyn

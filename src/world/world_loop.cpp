@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: MIT
+// The event loop: a short dispatcher over event kinds and one handler per kind.
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "dynamics/sphere_collision.hpp"
+#include "world/world_impl.hpp"
+
+namespace sparsedyn {
+namespace {
+
+// Stall detection: every kStallWindow events the clock must have moved by more than a relative
+// kStallProgress, else the loop is stuck (inelastic collapse, a Zeno sequence).
+constexpr double kStallProgress = 1e-12;
+
+}  // namespace
+
+Status World::Impl::AdvanceTo(double t) {
+  if (!std::isfinite(t)) return Error{"AdvanceTo: time must be finite"};
+  if (!started_) Start();
+  std::uint64_t window_events = 0;
+  double window_start = now_;
+  while (true) {
+    const bool has_element = !queue_.Empty();
+    const bool has_engagement = !engagement_queue_.Empty();
+    if (!has_element && !has_engagement) break;
+    // The earlier of the two queue heads; equal times go to the element queue (kinds < 3).
+    bool engagement = !has_element;
+    if (has_element && has_engagement) {
+      engagement = engagement_queue_.Top().time < queue_.Top().time;
+    }
+    const QueueTop top = engagement ? engagement_queue_.Top() : queue_.Top();
+    if (top.time > t) break;
+
+    if (++window_events >= settings_.stall_event_limit) {
+      if (top.time - window_start <= kStallProgress * std::max(1.0, std::abs(top.time))) {
+        std::ostringstream message;
+        message.precision(17);
+        message << "event loop stalled: " << window_events << " events without time advancing"
+                << " past t = " << top.time << " (inelastic collapse or a stuck configuration; "
+                << "last event " << EventKindName(static_cast<int>(top.kind)) << " of "
+                << (engagement ? "engagement " : "body ") << top.slot << ")";
+        return Error{message.str()};
+      }
+      window_events = 0;
+      window_start = top.time;
+    }
+    now_ = top.time;
+    Dispatch(top, engagement);
+  }
+  now_ = std::max(now_, t);
+  return Status::Ok();
+}
+
+void World::Impl::Dispatch(const QueueTop& top, bool engagement) {
+  ++stats_.events;
+  ++stats_.events_by_kind[static_cast<std::size_t>(top.kind)];
+  if (engagement) {
+    HandleEngagement(top.slot);
+    return;
+  }
+  switch (top.kind) {
+    case EventKind::kSphereMeet:
+      HandleSphereMeet(top.slot);
+      break;
+    case EventKind::kWallMeet:
+      HandleWallMeet(top.slot);
+      break;
+    case EventKind::kCellCrossing:
+      HandleCellCrossing(top.slot);
+      break;
+    case EventKind::kEngagement:
+    case EventKind::kNone:
+      SPARSEDYN_ASSERT(false, "element queue holds an event of the wrong kind");
+  }
+}
+
+void World::Impl::HandleCellCrossing(std::uint32_t i) {
+  const Event event = event_[i];
+  const int axis = event.aux / 2;
+  const int direction = (event.aux % 2) ? +1 : -1;
+  const Vec3 shift = grid_ ? grid_->Move(i, axis, direction)
+                           : all_pairs_->Move(i, axis, direction);
+  paths_[i].p0 += shift;  // a periodic wrap: the same motion, seen in the box
+  PredictAfterCrossing(i, axis, direction);
+}
+
+bool World::Impl::TouchingAndApproaching(std::uint32_t i, std::uint32_t j, Vec3& normal,
+                                         double& gap) const {
+  const Vec3 d = MinimumImage(paths_[j].PositionAt(now_) - paths_[i].PositionAt(now_));
+  const double reach = radius_[i] + radius_[j];
+  const double distance = d.norm();
+  gap = distance - reach;
+  normal = d / distance;
+  const Vec3 dv = paths_[j].VelocityAt(now_) - paths_[i].VelocityAt(now_);
+  return gap <= settings_.contact_tolerance * reach && d.dot(dv) < 0;
+}
+
+void World::Impl::HandleSphereMeet(std::uint32_t i) {
+  const Event event = event_[i];
+  const std::uint32_t j = event.target;
+  if (version_[j] != event.target_version) {
+    // Target-absent (§4.2): the target changed path since; the actor looks again.
+    ++stats_.stale_target_absent;
+    PredictFull(i);
+    return;
+  }
+  ++stats_.meetings;
+  if (has_envelopes_) {
+    // The element spheres meet; the bodies inside may not: engage (§3.3) and let the detailed
+    // phase watch the pair while the actor looks for its next sparse meeting.
+    if (!engagements_.Engaged(i, j)) {
+      const std::uint32_t k = engagements_.Add(i, j);
+      ++stats_.engagements_started;
+      PredictEngagement(k);
+    }
+    PredictFull(i);
+    return;
+  }
+  Vec3 normal;
+  double gap = 0;
+  if (!TouchingAndApproaching(i, j, normal, gap)) {
+    // Predicted early (conservative) or touching while separating: look again from here.
+    if (gap > settings_.contact_tolerance * (radius_[i] + radius_[j])) ++stats_.early_events;
+    PredictFull(i);
+    return;
+  }
+  Collide(i, j);
+}
+
+void World::Impl::NotePenetration(double gap) {
+  if (-gap > max_penetration_) max_penetration_ = -gap;
+}
+
+void World::Impl::SetVelocity(std::uint32_t i, const Vec3& v) {
+  Path& path = paths_[i];
+  path = Path{path.PositionAt(now_), v, path.a, now_};
+  ++version_[i];
+}
+
+void World::Impl::Collide(std::uint32_t i, std::uint32_t j) {
+  const auto start = settings_.profile_phases ? std::chrono::steady_clock::now()
+                                              : std::chrono::steady_clock::time_point{};
+  Vec3 normal;
+  double gap = 0;
+  TouchingAndApproaching(i, j, normal, gap);
+  NotePenetration(gap);
+  const ImpulseResult result =
+      SphereImpulse(paths_[i].VelocityAt(now_), paths_[j].VelocityAt(now_), inv_mass_[i],
+                    inv_mass_[j], normal, restitution_[i] * restitution_[j],
+                    settings_.elastic_below_speed);
+  SetVelocity(i, result.v_a);
+  SetVelocity(j, result.v_b);
+  ++stats_.collisions;
+  if (result.guarded) ++stats_.collapse_guarded;
+  if (settings_.profile_phases) {
+    stats_.seconds_response +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  if (on_collision_) {
+    const Vec3 p_i = paths_[i].p0;
+    on_collision_(CollisionEvent{now_, BodyId{i, 0}, BodyId{j, 0}, -1,
+                                 p_i + radius_[i] * normal, normal, result.impulse});
+  }
+  // j's own prediction is superseded: the actor-absent event of §4.2, removed in place.
+  const Event& pending = event_[j];
+  if (pending.kind != EventKind::kNone &&
+      !(pending.kind == EventKind::kSphereMeet && pending.target == i)) {
+    ++stats_.stale_actor_absent;
+  }
+  PredictFull(i);
+  PredictFull(j);
+  PredictEngagementsOf(i);
+  PredictEngagementsOf(j);
+}
+
+void World::Impl::HandleWallMeet(std::uint32_t i) {
+  const Event event = event_[i];
+  const WallPlane plane = BoxWall(settings_.container, event.aux);
+  const Vec3 p = paths_[i].PositionAt(now_);
+  const Vec3 v = paths_[i].VelocityAt(now_);
+  const double gap = plane.normal.dot(p) - plane.offset - radius_[i];
+  const double approach = plane.normal.dot(v);
+  if (gap > settings_.contact_tolerance * radius_[i] || approach >= 0) {
+    if (gap > settings_.contact_tolerance * radius_[i]) ++stats_.early_events;
+    PredictFull(i);
+    return;
+  }
+  NotePenetration(gap);
+  // A static wall has infinite mass: the body's normal velocity is reversed and scaled by e.
+  const ImpulseResult result = SphereImpulse(v, Vec3::Zero(), inv_mass_[i], 0.0, -plane.normal,
+                                             restitution_[i], settings_.elastic_below_speed);
+  SetVelocity(i, result.v_a);
+  ++stats_.wall_collisions;
+  if (result.guarded) ++stats_.collapse_guarded;
+  if (on_collision_) {
+    on_collision_(CollisionEvent{now_, BodyId{i, 0}, BodyId{}, event.aux,
+                                 p - radius_[i] * plane.normal, -plane.normal, result.impulse});
+  }
+  PredictFull(i);
+  PredictEngagementsOf(i);
+}
+
+void World::Impl::HandleEngagement(std::uint32_t k) {
+  const Engagements::Engagement e = engagements_[k];
+  if (e.contact_next) {
+    Vec3 normal;
+    double gap = 0;
+    if (TouchingAndApproaching(e.a, e.b, normal, gap)) {
+      Collide(e.a, e.b);
+      return;
+    }
+    if (gap > settings_.contact_tolerance * (radius_[e.a] + radius_[e.b])) ++stats_.early_events;
+    PredictEngagement(k);
+    return;
+  }
+  // The element spheres separate: the engagement ends and a looks for its next meeting, which
+  // may be with b again.
+  engagement_queue_.Erase(k);
+  engagements_.Remove(k);
+  ++stats_.engagements_ended;
+  PredictFull(e.a);
+}
+
+}  // namespace sparsedyn

@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: MIT
+// The sparse phase (§3-§4): each element predicts its earliest event against its broad-phase
+// candidates, the container walls and its cell boundary, and keeps exactly one queue entry.
+#include <cmath>
+
+#include "world/world_impl.hpp"
+
+namespace sparsedyn {
+namespace {
+
+// Absolute event time now + dt rounded down, so that rounding never makes an event late.
+double EventTime(double now, double dt) {
+  if (dt == kInfinity) return kInfinity;
+  const double t = now + dt;
+  return (t - now > dt) ? std::nextafter(t, -kInfinity) : t;
+}
+
+}  // namespace
+
+Mover World::Impl::MoverOf(std::uint32_t i, double t) const {
+  if (has_envelopes_) return MoverAt(paths_[i], radius_[i], envelope_[i], t);
+  return MoverAt(paths_[i], radius_[i], t);
+}
+
+Mover World::Impl::BodyMoverOf(std::uint32_t i, double t) const {
+  return MoverAt(paths_[i], radius_[i], t);
+}
+
+void World::Impl::ConsiderMeeting(std::uint32_t i, const Mover& mi, std::uint32_t j,
+                                  const Vec3& shift, Candidate& best) {
+  // An engaged pair is tracked by its engagement, not by the sparse phase.
+  if (has_envelopes_ && engagements_.HasAny(i) && engagements_.Engaged(i, j)) return;
+  ++stats_.pair_tests;
+  const double dt = PredictMeeting(mi, MoverOf(j, now_), shift);
+  if (dt == kInfinity) return;
+  const double t = EventTime(now_, dt);
+  // Ties go to the lower target index so that both broad phases choose the same event.
+  if (t < best.time || (t == best.time && j < best.target)) {
+    best = Candidate{t, j, version_[j]};
+  }
+}
+
+double World::Impl::PredictWall(const Mover& mi, std::uint8_t& wall) const {
+  double best = kInfinity;
+  wall = 0;
+  if (settings_.container.kind != Container::Kind::kWalledBox) return best;
+  for (int w = 0; w < 6; ++w) {
+    const WallPlane plane = BoxWall(settings_.container, w);
+    const double dt = PredictWallMeeting(mi, plane.normal, plane.offset);
+    if (dt < best) {
+      best = dt;
+      wall = static_cast<std::uint8_t>(w);
+    }
+  }
+  return best;
+}
+
+void World::Impl::FinishPrediction(std::uint32_t i, const Mover& mi, const Candidate& best) {
+  candidate_[i] = best;
+  Event event;
+  event.time = best.time;
+  event.kind = best.time == kInfinity ? EventKind::kNone : EventKind::kSphereMeet;
+  event.target = best.target;
+  event.target_version = best.target_version;
+
+  std::uint8_t wall = 0;
+  // Walls are met by the body itself: they are exact and static, so no envelope applies.
+  const double wall_time =
+      EventTime(now_, PredictWall(has_envelopes_ ? BodyMoverOf(i, now_) : mi, wall));
+  if (wall_time < event.time) event = Event{wall_time, EventKind::kWallMeet, wall, kNoIndex, 0};
+
+  int axis = 0, direction = 1;
+  const double crossing_dt =
+      grid_ ? grid_->PredictCrossing(mi, grid_->CellOf(i), axis, direction)
+            : all_pairs_->PredictCrossing(mi, 0, axis, direction);
+  const double crossing_time = EventTime(now_, crossing_dt);
+  if (crossing_time < event.time) {
+    event = Event{crossing_time, EventKind::kCellCrossing,
+                  static_cast<std::uint8_t>(axis * 2 + (direction > 0 ? 1 : 0)), kNoIndex, 0};
+  }
+  Schedule(i, event);
+}
+
+void World::Impl::Schedule(std::uint32_t i, const Event& event) {
+  event_[i] = event;
+  if (event.kind == EventKind::kNone) {
+    queue_.Erase(i);
+  } else {
+    queue_.Set(i, event.time, event.kind);
+  }
+}
+
+template <typename Broadphase>
+void World::Impl::PredictWith(const Broadphase& broadphase, std::uint32_t i) {
+  const Mover mi = MoverOf(i, now_);
+  Candidate best;
+  broadphase.ForEachNeighbor(
+      i, [&](std::uint32_t j, const Vec3& shift) { ConsiderMeeting(i, mi, j, shift, best); });
+  FinishPrediction(i, mi, best);
+}
+
+void World::Impl::PredictFull(std::uint32_t i) {
+  ++stats_.predictions;
+  if (grid_) {
+    PredictWith(*grid_, i);
+  } else {
+    PredictWith(*all_pairs_, i);
+  }
+}
+
+template <typename Broadphase>
+void World::Impl::PredictNewCellsWith(const Broadphase& broadphase, std::uint32_t i, int axis,
+                                      int direction) {
+  const Mover mi = MoverOf(i, now_);
+  Candidate best = candidate_[i];
+  broadphase.ForEachNewNeighbor(i, axis, direction, [&](std::uint32_t j, const Vec3& shift) {
+    ConsiderMeeting(i, mi, j, shift, best);
+  });
+  FinishPrediction(i, mi, best);
+}
+
+void World::Impl::PredictAfterCrossing(std::uint32_t i, int axis, int direction) {
+  // The meeting found by the last full prediction still bounds every old neighbour's meeting
+  // as long as its target has not changed path; then only the 9 new cells need a look
+  // (docs/sparse-phase.md#cell-crossings). Otherwise, or without a grid, predict in full.
+  const Candidate& kept = candidate_[i];
+  const bool kept_valid = kept.time == kInfinity || version_[kept.target] == kept.target_version;
+  if (!grid_ || !kept_valid) {
+    PredictFull(i);
+    return;
+  }
+  ++stats_.partial_predictions;
+  PredictNewCellsWith(*grid_, i, axis, direction);
+}
+
+void World::Impl::PredictEngagement(std::uint32_t k) {
+  Engagements::Engagement& e = engagements_[k];
+  const Vec3 shift = MinimumImage(paths_[e.b].PositionAt(now_) - paths_[e.a].PositionAt(now_)) -
+                     (paths_[e.b].PositionAt(now_) - paths_[e.a].PositionAt(now_));
+  // Contact of the bodies themselves (the detailed phase for spheres) or separation of the
+  // element spheres, whichever comes first.
+  const double contact = PredictMeeting(BodyMoverOf(e.a, now_), BodyMoverOf(e.b, now_), shift);
+  const double separation = PredictSeparation(MoverOf(e.a, now_), MoverOf(e.b, now_), shift);
+  e.contact_next = contact <= separation;
+  const double dt = std::min(contact, separation);
+  if (dt == kInfinity) {
+    engagement_queue_.Erase(k);
+  } else {
+    engagement_queue_.Set(k, EventTime(now_, dt), EventKind::kEngagement);
+  }
+}
+
+void World::Impl::PredictEngagementsOf(std::uint32_t i) {
+  if (!has_envelopes_ || !engagements_.HasAny(i)) return;
+  for (const std::uint32_t k : engagements_.Of(i)) PredictEngagement(k);
+}
+
+}  // namespace sparsedyn

@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: MIT
+#include "sparse/meeting.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scenes/random.hpp"
+#include "support/meeting_oracle.hpp"
+
+namespace sparsedyn {
+namespace {
+
+// Analytic meeting times are reproduced to a few ulps of the time scale.
+constexpr double kAnalyticTolerance = 1e-13;
+
+Mover Sphere(Vec3 p, Vec3 v, double r, Vec3 a = Vec3::Zero()) {
+  return Mover{p, v, a, r, 0.0, 0.0};
+}
+
+TEST(MeetingTime, HeadOnSpheresMeetAtGapOverClosingSpeed) {
+  // Centres 10 apart, radii 1 + 1: gap 8 closed at 2 + 2 = 4 m/s -> 2 s.
+  const Mover a = Sphere({0, 0, 0}, {2, 0, 0}, 1);
+  const Mover b = Sphere({10, 0, 0}, {-2, 0, 0}, 1);
+  const double dt = PredictMeeting(a, b, Vec3::Zero());
+  EXPECT_NEAR(dt, 2.0, kAnalyticTolerance);
+  EXPECT_LE(dt, 2.0);  // never late
+}
+
+TEST(MeetingTime, GlancingSpheresMeetWhereLateralOffsetAllows) {
+  // b moves along x at lateral offset h = 1.2 < R = 2: meets when the x-gap is sqrt(R^2 - h^2).
+  const double h = 1.2, reach = 2.0;
+  const Mover a = Sphere({0, 0, 0}, {0, 0, 0}, 1);
+  const Mover b = Sphere({10, h, 0}, {-1, 0, 0}, 1);
+  const double expected = 10 - std::sqrt(reach * reach - h * h);
+  EXPECT_NEAR(PredictMeeting(a, b, Vec3::Zero()), expected, kAnalyticTolerance);
+}
+
+TEST(MeetingTime, SpheresThatPassWideNeverMeet) {
+  const Mover a = Sphere({0, 0, 0}, {0, 0, 0}, 1);
+  const Mover b = Sphere({10, 2.0001, 0}, {-1, 0, 0}, 1);
+  EXPECT_EQ(PredictMeeting(a, b, Vec3::Zero()), kInfinity);
+}
+
+TEST(MeetingTime, ExactlyGrazingSpheresMeetAtClosestApproachNotLater) {
+  // Lateral offset equal to the summed radii: the spheres touch once, at x = 0 (t = 10).
+  const Mover a = Sphere({0, 0, 0}, {0, 0, 0}, 1);
+  const Mover b = Sphere({10, 2, 0}, {-1, 0, 0}, 1);
+  const double dt = PredictMeeting(a, b, Vec3::Zero());
+  ASSERT_NE(dt, kInfinity);
+  EXPECT_LE(dt, 10.0);
+  EXPECT_NEAR(dt, 10.0, 1e-6);  // a double root is only determined to ~sqrt(eps)
+}
+
+TEST(MeetingTime, EqualVelocitiesNeverMeet) {
+  const Mover a = Sphere({0, 0, 0}, {3, -1, 2}, 1);
+  const Mover b = Sphere({5, 0, 0}, {3, -1, 2}, 1);
+  EXPECT_EQ(PredictMeeting(a, b, Vec3::Zero()), kInfinity);
+}
+
+TEST(MeetingTime, ZeroRelativeVelocityTouchingIsNotAMeeting) {
+  const Mover a = Sphere({0, 0, 0}, {1, 0, 0}, 1);
+  const Mover b = Sphere({2, 0, 0}, {1, 0, 0}, 1);
+  EXPECT_EQ(PredictMeeting(a, b, Vec3::Zero()), kInfinity);
+}
+
+TEST(MeetingTime, OverlapByRoundOffMeetsNowIfApproachingElseIgnored) {
+  const Mover a = Sphere({0, 0, 0}, {0, 0, 0}, 1);
+  const Mover closing = Sphere({2 - 1e-15, 0, 0}, {-1, 0, 0}, 1);
+  const Mover opening = Sphere({2 - 1e-15, 0, 0}, {1, 0, 0}, 1);
+  EXPECT_EQ(PredictMeeting(a, closing, Vec3::Zero()), 0.0);
+  EXPECT_EQ(PredictMeeting(a, opening, Vec3::Zero()), kInfinity);
+}
+
+TEST(MeetingTime, BothUnderGravityIsTheSameAsNoGravity) {
+  const Vec3 g(0, 0, -9.81);
+  const Mover a = Sphere({0, 0, 0}, {2, 0, 0}, 1, g);
+  const Mover b = Sphere({10, 0, 0}, {-2, 0, 0}, 1, g);
+  EXPECT_NEAR(PredictMeeting(a, b, Vec3::Zero()), 2.0, 1e-12);
+}
+
+TEST(MeetingTime, ThrustingSphereMeetsAtQuadraticRoot) {
+  // b at rest 8 m beyond contact, a starts at 1 m/s with thrust 2 m/s^2: t + t^2 = 8.
+  const Mover a = Sphere({0, 0, 0}, {1, 0, 0}, 1, {2, 0, 0});
+  const Mover b = Sphere({10, 0, 0}, {0, 0, 0}, 1);
+  const double expected = (-1 + std::sqrt(1 + 4 * 8.0)) / 2;
+  const double dt = PredictMeeting(a, b, Vec3::Zero());
+  EXPECT_NEAR(dt, expected, 1e-12);
+  EXPECT_LE(dt, expected + 1e-15);
+}
+
+TEST(MeetingTime, ThrustReversesAndStillMeets) {
+  // a moves away at 1 m/s but is pushed back at 1 m/s^2: x = -t + t^2/2 reaches +8 at
+  // t = 1 + sqrt(17).
+  const Mover a = Sphere({0, 0, 0}, {-1, 0, 0}, 1, {1, 0, 0});
+  const Mover b = Sphere({10, 0, 0}, {0, 0, 0}, 1);
+  EXPECT_NEAR(PredictMeeting(a, b, Vec3::Zero()), 1 + std::sqrt(17.0), 1e-12);
+}
+
+TEST(MeetingTime, GrowingEnvelopesMeetEarlier) {
+  // Gap 8 closing at 2 m/s while each envelope grows at 0.5 m/s: 8 = (2 + 1) t.
+  Mover a = Sphere({0, 0, 0}, {1, 0, 0}, 1);
+  Mover b = Sphere({10, 0, 0}, {-1, 0, 0}, 1);
+  a.r1 = b.r1 = 0.5;
+  EXPECT_NEAR(PredictMeeting(a, b, Vec3::Zero()), 8.0 / 3.0, 1e-12);
+  // And a quadratic envelope: 8 = 2 t + (0.5 + 0.5) t^2 / 2 * 2 ... with e2 = 1 each:
+  // R(t) grows by t^2 (two envelopes of t^2/2), so 8 = 2t + t^2 -> t = 2.
+  a.r1 = b.r1 = 0.0;
+  a.r2 = b.r2 = 1.0;
+  EXPECT_NEAR(PredictMeeting(a, b, Vec3::Zero()), 2.0, 1e-12);
+}
+
+TEST(MeetingTime, PeriodicImageShiftIsApplied) {
+  const Mover a = Sphere({0.5, 0, 0}, {-1, 0, 0}, 0.5);
+  const Mover b = Sphere({9.5, 0, 0}, {0, 0, 0}, 0.5);
+  // Box of side 10: b's image at -0.5 is 1 away, touching distance 1 -> already touching...
+  // put it at 9.0 -> image at -1.0, gap 0.5 at closing speed 1.
+  const Mover b2 = Sphere({9.0, 0, 0}, {0, 0, 0}, 0.5);
+  EXPECT_NEAR(PredictMeeting(a, b2, Vec3(-10, 0, 0)), 0.5, 1e-14);
+  EXPECT_EQ(PredictMeeting(a, b, Vec3::Zero()), kInfinity);
+}
+
+TEST(WallMeetingTime, SphereReachesWallAtGapOverSpeed) {
+  const Mover a = Sphere({5, 0, 0}, {-2, 0, 0}, 1);
+  // Wall x = 0 with normal +x: the sphere's surface reaches it when x = 1 -> t = 2.
+  EXPECT_NEAR(PredictWallMeeting(a, Vec3(1, 0, 0), 0.0), 2.0, kAnalyticTolerance);
+  EXPECT_EQ(PredictWallMeeting(Sphere({5, 0, 0}, {2, 0, 0}, 1), Vec3(1, 0, 0), 0.0), kInfinity);
+}
+
+TEST(WallMeetingTime, BallThrownUpFallsOntoFloor) {
+  // Floor z = 0; ball radius 0.5 at z = 1.5 thrown up at 4 m/s under g = 10:
+  // 1 + 4t - 5t^2 = 0 -> t = (4 + sqrt(36)) / 10 = 1.
+  const Mover a = Sphere({0, 0, 1.5}, {0, 0, 4}, 0.5, {0, 0, -10});
+  EXPECT_NEAR(PredictWallMeeting(a, Vec3(0, 0, 1), 0.0), 1.0, 1e-12);
+}
+
+TEST(SeparationTime, HeadOnPassThroughEndsAtLargerRoot) {
+  const Mover a = Sphere({0, 0, 0}, {0, 0, 0}, 1);
+  const Mover b = Sphere({1, 0, 0}, {1, 0, 0}, 1);  // overlapping, leaving at 1 m/s
+  const double dt = PredictSeparation(a, b, Vec3::Zero());
+  EXPECT_NEAR(dt, 1.0, 1e-12);
+  EXPECT_GE(dt, 1.0);  // never early
+}
+
+// The 10^4 random pairs of this fast test (10^5 in meeting_slow_test.cpp) against the oracle.
+void CheckRandomPairs(int pairs, std::uint64_t seed) {
+  constexpr double kHorizon = 10.0;
+  // The oracle bisects in long double; predictions are double: a prediction may not be later
+  // than the oracle's root by more than the double rounding of the time itself.
+  constexpr long double kLateSlack = 4e-15L;
+  scenes::Random random(seed);
+  int met = 0, late = 0, missed = 0, spurious = 0;
+  for (int trial = 0; trial < pairs; ++trial) {
+    auto vec = [&](double s) {
+      return Vec3(random.Uniform(-s, s), random.Uniform(-s, s), random.Uniform(-s, s));
+    };
+    Mover a{vec(5), vec(2), Vec3::Zero(), random.Uniform(0.1, 1), 0, 0};
+    Mover b{vec(5), vec(2), Vec3::Zero(), random.Uniform(0.1, 1), 0, 0};
+    // Aim b roughly at a so that most pairs meet, some graze and some miss.
+    b.v = a.v + (a.p - b.p).normalized() * random.Uniform(0.5, 2) + vec(0.5);
+    const int kind = trial % 4;  // linear, accelerated, envelope, accelerated + envelope
+    if (kind == 1 || kind == 3) {
+      a.a = vec(1);
+      b.a = vec(1);
+    }
+    if (kind >= 2) {
+      a.r1 = random.Uniform(0, 0.2);
+      b.r2 = random.Uniform(0, 0.1);
+    }
+    if (testing::OracleGap(a, b, 0) <= 0) continue;  // start separated
+    SCOPED_TRACE(::testing::Message() << "seed " << seed << " trial " << trial);
+    const double predicted = PredictMeeting(a, b, Vec3::Zero(), kHorizon);
+    const std::optional<long double> truth = testing::OracleMeeting(a, b, kHorizon);
+    if (truth) {
+      ++met;
+      if (predicted == kInfinity) {
+        ++missed;
+      } else if (predicted > *truth + kLateSlack * (1 + *truth)) {
+        ++late;
+      }
+    } else if (predicted != kInfinity &&
+               testing::OracleGap(a, b, predicted) > 1e-9L * (1 + a.p.squaredNorm() + b.p.squaredNorm())) {
+      ++spurious;  // a predicted meeting that is no meeting at all
+    }
+  }
+  EXPECT_EQ(late, 0);
+  EXPECT_EQ(missed, 0);
+  EXPECT_EQ(spurious, 0);
+  EXPECT_GT(met, pairs / 10) << "the sample should contain many meetings";
+  std::printf("random pairs: %d, meetings %d, late %d, missed %d, spurious %d\n", pairs, met, late,
+              missed, spurious);
+}
+
+TEST(MeetingTime, AgreesWithDenseSamplingOnRandomPairs) { CheckRandomPairs(10000, 20261122); }
+
+}  // namespace
+}  // namespace sparsedyn

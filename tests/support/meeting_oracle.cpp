@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#include "support/meeting_oracle.hpp"
+
+namespace sparsedyn::testing {
+namespace {
+
+constexpr int kBisections = 200;
+
+long double GapDerivative(const Mover& a, const Mover& b, long double t) {
+  long double qdq = 0;
+  for (int k = 0; k < 3; ++k) {
+    const long double dp = static_cast<long double>(b.p[k]) - a.p[k];
+    const long double dv = static_cast<long double>(b.v[k]) - a.v[k];
+    const long double da = static_cast<long double>(b.a[k]) - a.a[k];
+    qdq += (dp + t * (dv + 0.5L * t * da)) * (dv + t * da);
+  }
+  const long double r0 = static_cast<long double>(a.r0) + b.r0;
+  const long double r1 = static_cast<long double>(a.r1) + b.r1;
+  const long double r2 = static_cast<long double>(a.r2) + b.r2;
+  const long double r = r0 + t * (r1 + 0.5L * t * r2);
+  return 2 * (qdq - r * (r1 + t * r2));
+}
+
+// The first point of [lo, hi] where g <= 0, given g(lo) > 0 >= g(hi).
+long double BisectRoot(const Mover& a, const Mover& b, long double lo, long double hi) {
+  for (int i = 0; i < kBisections && hi - lo > 0; ++i) {
+    const long double mid = 0.5L * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (OracleGap(a, b, mid) <= 0 ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+}  // namespace
+
+long double OracleGap(const Mover& a, const Mover& b, long double t) {
+  long double q2 = 0;
+  for (int k = 0; k < 3; ++k) {
+    const long double dp = static_cast<long double>(b.p[k]) - a.p[k];
+    const long double dv = static_cast<long double>(b.v[k]) - a.v[k];
+    const long double da = static_cast<long double>(b.a[k]) - a.a[k];
+    const long double q = dp + t * (dv + 0.5L * t * da);
+    q2 += q * q;
+  }
+  const long double r0 = static_cast<long double>(a.r0) + b.r0;
+  const long double r1 = static_cast<long double>(a.r1) + b.r1;
+  const long double r2 = static_cast<long double>(a.r2) + b.r2;
+  const long double r = r0 + t * (r1 + 0.5L * t * r2);
+  return q2 - r * r;
+}
+
+std::optional<long double> OracleMeeting(const Mover& a, const Mover& b, long double horizon,
+                                         int samples) {
+  if (OracleGap(a, b, 0) <= 0) return 0.0L;
+  long double previous = 0;
+  for (int k = 1; k <= samples; ++k) {
+    const long double t = horizon * k / samples;
+    if (OracleGap(a, b, t) <= 0) return BisectRoot(a, b, previous, t);
+    if (GapDerivative(a, b, previous) < 0 && GapDerivative(a, b, t) > 0) {
+      // A local minimum inside: find it, and the root before it if the minimum dips below 0.
+      long double lo = previous, hi = t;
+      for (int i = 0; i < kBisections; ++i) {
+        const long double mid = 0.5L * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        (GapDerivative(a, b, mid) < 0 ? lo : hi) = mid;
+      }
+      if (OracleGap(a, b, lo) <= 0) return BisectRoot(a, b, previous, lo);
+    }
+    previous = t;
+  }
+  return std::nullopt;
+}
+
+}  // namespace sparsedyn::testing
