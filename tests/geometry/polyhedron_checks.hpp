@@ -115,15 +115,15 @@ inline ::testing::AssertionResult IsConsistent(const ConvexPolyhedron& p) {
       if (es[i] != hs[i] >> 1 || fs[i] != p.half_edge(hs[i]).face) return fail("ring spans");
       if (p.OtherVertex(es[i], v) != p.half_edge(hs[i] ^ 1).origin) return fail("OtherVertex");
     }
-    // Counter-clockwise seen from outside: consecutive edge directions turn about the outward
-    // direction (approximated by the sum of the incident face normals).
-    Eigen::Vector3d outward = Eigen::Vector3d::Zero();
-    for (const auto f : fs) outward += p.face(f).plane.normal;
+    // Counter-clockwise seen from outside: edge directions a = h_i and b = h_{i+1} bound the
+    // face of h_i, whose loop turns left at v, so a x b points along that face's normal.
     for (std::size_t i = 0; i < hs.size(); ++i) {
       const Eigen::Vector3d a = p.vertex(p.half_edge(hs[i] ^ 1).origin) - p.vertex(v);
       const Eigen::Vector3d b =
           p.vertex(p.half_edge(hs[(i + 1) % hs.size()] ^ 1).origin) - p.vertex(v);
-      if (a.cross(b).dot(outward) <= 0) return fail("vertex ring not ccw at " + std::to_string(v));
+      if (a.cross(b).dot(p.face(fs[i]).plane.normal) <= 0) {
+        return fail("vertex ring not ccw at " + std::to_string(v));
+      }
     }
   }
   if (ring_total != p.half_edge_count()) return fail("vertex rings do not cover half-edges");
