@@ -36,14 +36,15 @@ class AllPairs {
   }
 
   /// dt until the centre leaves the periodic box (a wrap); never in other containers.
-  double PredictCrossing(const Mover& m, std::uint32_t /*cell*/, int& axis, int& direction) const {
+  double PredictCrossing(const Mover& m, std::uint32_t /*cell*/, double min_dt, int& axis,
+                         int& direction) const {
     axis = 0;
     direction = 1;
     if (!periodic_) return kInfinity;
     double best = kInfinity;
     for (int k = 0; k < 3; ++k) {
       int dir = 1;
-      const double dt = SlabExitTime(m.p[k], m.v[k], m.a[k], lo_[k], hi_[k], dir);
+      const double dt = SlabExitTime(m.p[k], m.v[k], m.a[k], lo_[k], hi_[k], min_dt, dir);
       if (dt < best) {
         best = dt;
         axis = k;

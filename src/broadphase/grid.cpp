@@ -79,7 +79,7 @@ void Grid::Remove(std::uint32_t e) {
   cell_of_[e] = kNoIndex;
 }
 
-double Grid::PredictCrossing(const Mover& m, std::uint32_t cell, int& axis,
+double Grid::PredictCrossing(const Mover& m, std::uint32_t cell, double min_dt, int& axis,
                              int& direction) const {
   const std::array<int, 3> c = Coordinates(cell);
   double best = kInfinity;
@@ -89,10 +89,16 @@ double Grid::PredictCrossing(const Mover& m, std::uint32_t cell, int& axis,
     // Faces on the outside of a walled box are not crossings: the walls keep the centre in.
     const bool first = c[k] == 0;
     const bool last = c[k] == n_[k] - 1;
-    const double lo = (first && !periodic_) ? -kInfinity : lo_[k] + c[k] * size_[k];
-    const double hi = (last && !periodic_) ? kInfinity : lo_[k] + (c[k] + 1) * size_[k];
+    // The box faces are exact (lo_ and lo_ + length_), so that periodic wraps happen at the same
+    // times as with AllPairs.
+    double lo = lo_[k] + c[k] * size_[k];
+    double hi = last ? lo_[k] + length_[k] : lo_[k] + (c[k] + 1) * size_[k];
+    if (!periodic_) {
+      if (first) lo = -kInfinity;
+      if (last) hi = kInfinity;
+    }
     int dir = 1;
-    const double dt = SlabExitTime(m.p[k], m.v[k], m.a[k], lo, hi, dir);
+    const double dt = SlabExitTime(m.p[k], m.v[k], m.a[k], lo, hi, min_dt, dir);
     if (dt < best) {
       best = dt;
       axis = k;

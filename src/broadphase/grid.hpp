@@ -41,7 +41,8 @@ class Grid {
 
   /// dt until the centre of `m` leaves the cell `cell` (faces on the outer walls of a walled box
   /// never count). Sets `axis` and `direction` (+1/-1) of the face it leaves through.
-  double PredictCrossing(const Mover& m, std::uint32_t cell, int& axis, int& direction) const;
+  double PredictCrossing(const Mover& m, std::uint32_t cell, double min_dt, int& axis,
+                         int& direction) const;
 
   /// Moves element `e` to the neighbouring cell across (axis, direction). Returns the shift to
   /// add to its position to keep it inside a periodic box (zero unless it wrapped).

@@ -86,9 +86,8 @@ class World::Impl {
   void PredictWith(const Broadphase& broadphase, std::uint32_t i);
   template <typename Broadphase>
   void PredictNewCellsWith(const Broadphase& broadphase, std::uint32_t i, int axis, int direction);
-  void ConsiderMeeting(std::uint32_t i, const Mover& mi, std::uint32_t j, const Vec3& shift,
-                       Candidate& best);
-  void FinishPrediction(std::uint32_t i, const Mover& mi, const Candidate& best);
+  void ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift, Candidate& best);
+  void FinishPrediction(std::uint32_t i, const Candidate& best);
   double PredictWall(const Mover& mi, std::uint8_t& wall) const;
   void Schedule(std::uint32_t i, const Event& event);
   void PredictEngagement(std::uint32_t k);

@@ -26,14 +26,18 @@ Mover World::Impl::BodyMoverOf(std::uint32_t i, double t) const {
   return MoverAt(paths_[i], radius_[i], t);
 }
 
-void World::Impl::ConsiderMeeting(std::uint32_t i, const Mover& mi, std::uint32_t j,
-                                  const Vec3& shift, Candidate& best) {
+void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift,
+                                  Candidate& best) {
   // An engaged pair is tracked by its engagement, not by the sparse phase.
   if (has_envelopes_ && engagements_.HasAny(i) && engagements_.Engaged(i, j)) return;
   ++stats_.pair_tests;
-  const double dt = PredictMeeting(mi, MoverOf(j, now_), shift);
+  // Predict from the later of the two segment starts, not from `now`: the result then depends
+  // only on the two paths, so a prediction kept across cell crossings, or made by another broad
+  // phase at another time, is bit-identical (determinism across broad phases).
+  const double reference = std::max(paths_[i].t0, paths_[j].t0);
+  const double dt = PredictMeeting(MoverOf(i, reference), MoverOf(j, reference), shift);
   if (dt == kInfinity) return;
-  const double t = EventTime(now_, dt);
+  const double t = std::max(now_, EventTime(reference, dt));
   // Ties go to the lower target index so that both broad phases choose the same event.
   if (t < best.time || (t == best.time && j < best.target)) {
     best = Candidate{t, j, version_[j]};
@@ -55,7 +59,7 @@ double World::Impl::PredictWall(const Mover& mi, std::uint8_t& wall) const {
   return best;
 }
 
-void World::Impl::FinishPrediction(std::uint32_t i, const Mover& mi, const Candidate& best) {
+void World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
   candidate_[i] = best;
   Event event;
   event.time = best.time;
@@ -64,16 +68,21 @@ void World::Impl::FinishPrediction(std::uint32_t i, const Mover& mi, const Candi
   event.target_version = best.target_version;
 
   std::uint8_t wall = 0;
-  // Walls are met by the body itself: they are exact and static, so no envelope applies.
+  // Walls are met by the body itself (exact and static: no envelope applies), predicted from the
+  // segment start so that the time does not depend on when the prediction is made.
+  const double t0 = paths_[i].t0;
   const double wall_time =
-      EventTime(now_, PredictWall(has_envelopes_ ? BodyMoverOf(i, now_) : mi, wall));
+      std::max(now_, EventTime(t0, PredictWall(BodyMoverOf(i, t0), wall)));
   if (wall_time < event.time) event = Event{wall_time, EventKind::kWallMeet, wall, kNoIndex, 0};
 
+  // The crossing, too, from the segment start (a periodic wrap then happens at the same time
+  // whichever broad phase predicts it), but not before now.
   int axis = 0, direction = 1;
+  const Mover m0 = BodyMoverOf(i, t0);
   const double crossing_dt =
-      grid_ ? grid_->PredictCrossing(mi, grid_->CellOf(i), axis, direction)
-            : all_pairs_->PredictCrossing(mi, 0, axis, direction);
-  const double crossing_time = EventTime(now_, crossing_dt);
+      grid_ ? grid_->PredictCrossing(m0, grid_->CellOf(i), now_ - t0, axis, direction)
+            : all_pairs_->PredictCrossing(m0, 0, now_ - t0, axis, direction);
+  const double crossing_time = std::max(now_, EventTime(t0, crossing_dt));
   if (crossing_time < event.time) {
     event = Event{crossing_time, EventKind::kCellCrossing,
                   static_cast<std::uint8_t>(axis * 2 + (direction > 0 ? 1 : 0)), kNoIndex, 0};
@@ -92,11 +101,10 @@ void World::Impl::Schedule(std::uint32_t i, const Event& event) {
 
 template <typename Broadphase>
 void World::Impl::PredictWith(const Broadphase& broadphase, std::uint32_t i) {
-  const Mover mi = MoverOf(i, now_);
   Candidate best;
   broadphase.ForEachNeighbor(
-      i, [&](std::uint32_t j, const Vec3& shift) { ConsiderMeeting(i, mi, j, shift, best); });
-  FinishPrediction(i, mi, best);
+      i, [&](std::uint32_t j, const Vec3& shift) { ConsiderMeeting(i, j, shift, best); });
+  FinishPrediction(i, best);
 }
 
 void World::Impl::PredictFull(std::uint32_t i) {
@@ -111,12 +119,11 @@ void World::Impl::PredictFull(std::uint32_t i) {
 template <typename Broadphase>
 void World::Impl::PredictNewCellsWith(const Broadphase& broadphase, std::uint32_t i, int axis,
                                       int direction) {
-  const Mover mi = MoverOf(i, now_);
   Candidate best = candidate_[i];
   broadphase.ForEachNewNeighbor(i, axis, direction, [&](std::uint32_t j, const Vec3& shift) {
-    ConsiderMeeting(i, mi, j, shift, best);
+    ConsiderMeeting(i, j, shift, best);
   });
-  FinishPrediction(i, mi, best);
+  FinishPrediction(i, best);
 }
 
 void World::Impl::PredictAfterCrossing(std::uint32_t i, int axis, int direction) {
