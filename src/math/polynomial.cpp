@@ -29,11 +29,6 @@ int Polynomial::Degree() const {
   return -1;
 }
 
-double Polynomial::Coefficient(int i) const {
-  if (i < 0 || i > kMaxPolynomialDegree) return 0.0;
-  return c_[static_cast<std::size_t>(i)];
-}
-
 void Polynomial::SetCoefficient(int i, double value) {
   SPARSEDYN_ASSERT(i >= 0 && i <= kMaxPolynomialDegree, "coefficient index out of range");
   c_[static_cast<std::size_t>(i)] = value;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <initializer_list>
 #include <string>
 
@@ -31,7 +32,9 @@ class Polynomial {
   int Degree() const;
 
   /// c[i] for 0 <= i <= kMaxPolynomialDegree, 0 beyond the degree; i outside that range is 0 too.
-  double Coefficient(int i) const;
+  double Coefficient(int i) const {
+    return i < 0 || i > kMaxPolynomialDegree ? 0.0 : c_[static_cast<std::size_t>(i)];
+  }
 
   /// Sets c[i]; 0 <= i <= kMaxPolynomialDegree (asserted).
   void SetCoefficient(int i, double value);

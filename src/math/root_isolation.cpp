@@ -126,7 +126,7 @@ class DerivativeTower {
 
  private:
   int degree_;
-  Real q_[kCoefficientCount][kCoefficientCount] = {};
+  Real q_[kCoefficientCount][kCoefficientCount];  // only q_[j][0 .. degree_ - j] are set
 };
 
 // Doubles mapped monotonically onto integers (-0 and +0 both to 0), so that a bisection in this
@@ -153,15 +153,17 @@ double Midpoint(std::int64_t a, std::int64_t b) {
 
 // Shrinks [left, right] to adjacent doubles (or until the step cap) keeping the invariant
 // is_left(left) && !is_left(right); is_left must be how `left` and `right` were classified.
-// Newton steps from the latest sample converge quickly; once Newton moves < 2 ulps the far end
-// would only creep, so we probe a growing number of ulps past the iterate; and when the
-// bracket did not halve over two steps we bisect in the order of doubles.
+// Newton from the latest point is taken while it stays inside and its moves keep halving (the
+// safeguard of rtsafe, Numerical Recipes 9.4), otherwise we bisect in the order of doubles; once
+// Newton moves < 2 ulps we probe a growing number of ulps past the iterate so that the other end
+// closes too. As a failsafe the bracket must halve (in doubles) every kFailsafeWindow steps.
 template <typename IsLeft>
 void Narrow(const DerivativeTower& tower, int level, double& left, double& right, double guess,
             IsLeft is_left) {
-  constexpr std::uint64_t kNoWidth = std::numeric_limits<std::uint64_t>::max();
-  std::uint64_t width_two_steps_ago = kNoWidth;
-  std::uint64_t width_one_step_ago = kNoWidth;
+  constexpr int kFailsafeWindow = 8;
+  std::uint64_t window_width = Distance(Ordered(left), Ordered(right));
+  Real last_move = std::numeric_limits<Real>::infinity();
+  Real move_before = last_move;
   std::int64_t probe = 0;
   double t = guess;
   for (int step = 0; step < kMaxNarrowSteps; ++step) {
@@ -170,29 +172,54 @@ void Narrow(const DerivativeTower& tower, int level, double& left, double& right
     const std::uint64_t width = Distance(ordered_left, ordered_right);
     if (width <= 1) return;
 
-    // Bisection safeguard.
-    const bool stalled = width_two_steps_ago != kNoWidth && width > width_two_steps_ago / 2;
-    width_two_steps_ago = width_one_step_ago;
-    width_one_step_ago = width;
-    if (stalled || !(left < t && t < right)) t = Midpoint(ordered_left, ordered_right);
+    // Failsafe bisection, and bisection whenever the candidate left the bracket.
+    bool bisect = false;
+    if (step % kFailsafeWindow == kFailsafeWindow - 1) {
+      bisect = width > window_width / 2;
+      window_width = width;
+    }
+    if (bisect || !(left < t && t < right)) t = Midpoint(ordered_left, ordered_right);
 
     // Classify t and keep the invariant.
     const Sample s = tower.Evaluate(level, t);
     const bool went_left = is_left(s);
     (went_left ? left : right) = t;
 
-    // Next candidate: Newton, or the ulp probe towards the other end once Newton has converged.
-    const double newton = static_cast<double>(t - s.value / s.slope);
+    // Next candidate: Newton while converging, then the ulp probe across the boundary.
+    const Real newton_move = -s.value / s.slope;
+    const double newton = static_cast<double>(t + newton_move);
     const std::int64_t ordered_t = Ordered(t);
-    if (std::isfinite(newton) &&
+    const bool newton_finite = std::isfinite(newton);
+    if (newton_finite &&
         Distance(std::min(ordered_t, Ordered(newton)), std::max(ordered_t, Ordered(newton))) > 2) {
-      t = newton;
+      const bool converging = std::fabs(newton_move) <= move_before / 2;
+      t = converging ? newton : std::numeric_limits<double>::quiet_NaN();
       probe = 0;
     } else {
       probe = std::clamp<std::int64_t>(probe * 2, 2, kMaxProbeUlps);
       t = FromOrdered(went_left ? ordered_t + probe : ordered_t - probe);
     }
+    move_before = last_move;
+    last_move = newton_finite ? std::fabs(newton_move) : std::numeric_limits<Real>::infinity();
   }
+}
+
+// As Narrow, for a boundary expected right next to one end (`from_left`: next to `left`), as
+// at the edge of the uncertainty zone around an exact or multiple root, where Newton aims at the
+// root, not at the edge: gallop 1, 2, 4, ... doubles away from that end first, then narrow.
+template <typename IsLeft>
+void NarrowFromEnd(const DerivativeTower& tower, int level, double& left, double& right,
+                   bool from_left, IsLeft is_left) {
+  for (std::int64_t jump = 1; jump <= (std::int64_t{1} << 62); jump *= 2) {
+    const std::int64_t ordered_left = Ordered(left);
+    const std::int64_t ordered_right = Ordered(right);
+    if (Distance(ordered_left, ordered_right) <= static_cast<std::uint64_t>(jump)) break;
+    const double t = FromOrdered(from_left ? ordered_left + jump : ordered_right - jump);
+    const bool went_left = is_left(tower.Evaluate(level, t));
+    (went_left ? left : right) = t;
+    if (went_left != from_left) break;  // crossed the boundary: it is now bracketed tightly
+  }
+  Narrow(tower, level, left, right, std::numeric_limits<double>::quiet_NaN(), is_left);
 }
 
 // Appends [lo, hi], merging with the last interval when they overlap or touch. Should the
@@ -249,33 +276,36 @@ void ProcessGap(const DerivativeTower& tower, int level, const GapEnd& x, const 
     double right = y.t;
     if (y.sign != 0 && !first_only) {
       double left = x.t;
-      Narrow(tower, level, left, right, std::numeric_limits<double>::quiet_NaN(),
-             [&](const Sample& s) { return s.sign != y.sign; });
+      NarrowFromEnd(tower, level, left, right, /*from_left=*/true,
+                    [&](const Sample& s) { return s.sign != y.sign; });
     }
     AddInterval(out, x.t, right);
     return;
   }
 
-  // Certified at the left end: the interval starts after the last point with that sign.
+  // Certified at the left end, uncertain at the right end (a touching root at the critical
+  // point y, or an exact root there): the interval runs from the edge of the uncertainty to y.
   double left = x.t;
   double right = y.t;
-  double guess = hints.In(x.t, y.t);
-  if (std::isnan(guess)) guess = SecantGuess(x.t, x.sample, y.t, y.sample);
-  Narrow(tower, level, left, right, guess, [&](const Sample& s) { return s.sign == x.sign; });
-
-  // Uncertain at the right end: the interval runs up to it.
+  const auto keeps_left_sign = [&](const Sample& s) { return s.sign == x.sign; };
   if (y.sign == 0) {
+    NarrowFromEnd(tower, level, left, right, /*from_left=*/false, keeps_left_sign);
     AddInterval(out, left, y.t);
     return;
   }
+
+  // A certified sign change: the interval starts after the last point with the left sign.
+  double guess = hints.In(x.t, y.t);
+  if (std::isnan(guess)) guess = SecantGuess(x.t, x.sample, y.t, y.sample);
+  Narrow(tower, level, left, right, guess, keeps_left_sign);
 
   // A certified sign change usually ends at adjacent doubles; if `right` is still uncertain,
   // find where the opposite sign becomes certified (not needed for the earliest root only).
   if (!first_only && tower.Evaluate(level, right).sign == 0) {
     double uncertain = right;
     right = y.t;
-    Narrow(tower, level, uncertain, right, std::numeric_limits<double>::quiet_NaN(),
-           [&](const Sample& s) { return s.sign != y.sign; });
+    NarrowFromEnd(tower, level, uncertain, right, /*from_left=*/true,
+                  [&](const Sample& s) { return s.sign != y.sign; });
   }
   AddInterval(out, left, right);
 }
@@ -357,15 +387,16 @@ RootIntervals IsolateRealRoots(const Polynomial& p, double lo, double hi, bool f
 
   // From the linear q_{n-1} (the constant q_n has no roots) down to q_0 = p.
   const DerivativeTower tower(p);
-  RootIntervals critical;
+  RootIntervals levels[2];  // ping-pong: the critical intervals and this level's roots
   const Hints no_hints;
   for (int level = n - 1; level >= 0; --level) {
-    RootIntervals roots;
+    const RootIntervals& critical = levels[(level + 1) % 2];
+    RootIntervals& roots = levels[level % 2];
+    roots.count = 0;
     IsolateLevel(tower, level, critical, a, b, first_only && level == 0,
                  level == 0 ? hints : no_hints, roots);
-    critical = roots;
   }
-  return critical;
+  return levels[0];
 }
 
 }  // namespace sparsedyn
