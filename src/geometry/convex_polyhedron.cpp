@@ -130,6 +130,7 @@ void ConvexPolyhedron::ComputeDerivedData() {
       vertex_edges_.push_back(h >> 1);
       vertex_faces_.push_back(half_edges_[Index(h)].face);
       h = half_edges_[Index(h)].prev ^ 1;
+      SPARSEDYN_ASSERT(vertex_half_edges_.size() <= half_edges_.size(), "vertex ring not closed");
     } while (h != start);
   }
   vertex_first_[vertex_count_u] = static_cast<std::int32_t>(vertex_half_edges_.size());
@@ -138,11 +139,11 @@ void ConvexPolyhedron::ComputeDerivedData() {
   // for faces that are planar only within tolerance; the offset averages over the vertices.
   for (std::size_t f = 0; f < faces_.size(); ++f) {
     const auto loop = FaceVertices(static_cast<int>(f));
+    // Relative to the first vertex, so that a face far from the origin keeps its precision.
+    const Eigen::Vector3d& o = vertices_[Index(loop[0])];
     Eigen::Vector3d newell = Eigen::Vector3d::Zero();
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      const Eigen::Vector3d& a = vertices_[Index(loop[i])];
-      const Eigen::Vector3d& b = vertices_[Index(loop[(i + 1) % loop.size()])];
-      newell += a.cross(b);
+    for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
+      newell += (vertices_[Index(loop[i])] - o).cross(vertices_[Index(loop[i + 1])] - o);
     }
     const Eigen::Vector3d normal = newell.normalized();
     double offset = 0.0;

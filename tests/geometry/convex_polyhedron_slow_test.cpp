@@ -3,6 +3,7 @@
 // hulls, Voronoi regions on many of them, and the Archimedean solids against a brute-force hull.
 #include <gtest/gtest.h>
 
+#include <numbers>
 #include <set>
 #include <string>
 
@@ -59,6 +60,16 @@ TEST(RandomHulls, LargeFaceCountsAreHit) {
     ASSERT_TRUE(p.ok()) << p.error().message;
     EXPECT_EQ(p->face_count(), faces);
   }
+}
+
+TEST(MassProperties, FineSphereHullApproachesTheBall) {
+  // n = 3002 vertices: the cap deficit (~10 / n, see the fast test) is ~3.5e-3 < 5e-3.
+  const ConvexPolyhedron ball = *RandomConvexPolyhedron(6000, /*seed=*/11);
+  const double volume = 4.0 / 3.0 * std::numbers::pi;
+  EXPECT_NEAR(ball.volume(), volume, 5e-3 * volume);
+  EXPECT_LT(ball.centroid().norm(), 5e-3);
+  const Eigen::Matrix3d expected = 0.4 * ball.volume() * Eigen::Matrix3d::Identity();
+  EXPECT_LT((ball.inertia() - expected).norm(), 5e-3 * expected.norm());
 }
 
 TEST(ArchimedeanSolids, QhullAgreesWithBruteForceHull) {

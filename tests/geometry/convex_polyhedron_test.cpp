@@ -330,6 +330,23 @@ TEST(FromPoints, IgnoresInteriorPointsAndPointsOnFacesAndEdges) {
   for (int v = 0; v < 8; ++v) EXPECT_EQ(cube->vertex(v), points[static_cast<std::size_t>(v + 3)]);
 }
 
+TEST(FromPoints, LatticeWithManyCoplanarPointsGivesTheCube) {
+  // 5^3 lattice points, most of them on faces and edges, some jittered by round-off sized
+  // amounts: Qhull's merging plus ours must still give the 8-corner cube.
+  std::vector<Eigen::Vector3d> points;
+  std::mt19937_64 rng(3);
+  for (int i = 0; i < 125; ++i) {
+    Eigen::Vector3d p(i % 5 - 2, (i / 5) % 5 - 2, i / 25 - 2);
+    if (i % 3 == 0) p += 1e-14 * testing::RandomUnitVector(rng);
+    points.push_back(p);
+  }
+  const Result<ConvexPolyhedron> cube = ConvexPolyhedron::FromPoints(points);
+  ASSERT_TRUE(cube.ok()) << cube.error().message;
+  EXPECT_EQ(cube->face_count(), 6);
+  EXPECT_TRUE(IsConsistent(*cube));
+  EXPECT_NEAR(cube->volume(), 64.0, 1e-11);
+}
+
 TEST(FromPoints, AgreesWithFaceListConstructionOnPlatonicSolids) {
   for (int s = 0; s < kPlatonicSolidCount; ++s) {
     const auto solid = static_cast<PlatonicSolid>(s);
@@ -408,16 +425,18 @@ TEST(MassProperties, ScalingScalesVolumeAndInertia) {
   EXPECT_NEAR(q.bounding_radius(), 2.5 * p.bounding_radius(), 1e-12);
 }
 
-TEST(MassProperties, FineSphereHullApproachesTheBall) {
-  // A hull inscribed in the unit sphere with n = 3002 vertices: edges h ~ sqrt(8 pi / n) ~ 0.09,
-  // so the gap to the sphere (h^2 / 8 ~ 1e-3) bounds the relative errors by ~3e-3.
-  const ConvexPolyhedron ball = *RandomConvexPolyhedron(6000, /*seed=*/11);
+TEST(MassProperties, SphereHullApproachesTheBall) {
+  // A hull inscribed in the unit sphere with n = 1002 vertices. Each face of area A cuts off a
+  // cap of volume ~A^2 / (4 pi), so the relative deficit is ~ (4 pi / F) * 3 / (4 pi) ~ 2 / n
+  // times a shape factor of a few: ~1% here; 2% bounds it. The slow tests repeat this with
+  // 6000 faces and 5e-3.
+  const ConvexPolyhedron ball = *RandomConvexPolyhedron(2000, /*seed=*/11);
   const double volume = 4.0 / 3.0 * std::numbers::pi;
-  EXPECT_NEAR(ball.volume(), volume, 5e-3 * volume);
-  EXPECT_LT(ball.centroid().norm(), 5e-3);
+  EXPECT_NEAR(ball.volume(), volume, 2e-2 * volume);
+  EXPECT_LT(ball.centroid().norm(), 1e-2);
   const Eigen::Matrix3d expected = 0.4 * ball.volume() * Eigen::Matrix3d::Identity();
-  EXPECT_LT((ball.inertia() - expected).norm(), 5e-3 * expected.norm());
-  EXPECT_LE(ball.bounding_radius(), 1.0 + 5e-3);
+  EXPECT_LT((ball.inertia() - expected).norm(), 2e-2 * expected.norm());
+  EXPECT_LE(ball.bounding_radius(), 1.0 + 1e-2);
 }
 
 TEST(MassProperties, AgreesWithMonteCarloOnARandomHull) {
@@ -427,7 +446,7 @@ TEST(MassProperties, AgreesWithMonteCarloOnARandomHull) {
   const ConvexPolyhedron p = *RandomConvexPolyhedron(40, seed, options);
   SCOPED_TRACE("seed " + std::to_string(seed) + ": " + Describe(p));
   std::mt19937_64 rng(seed);
-  const int samples = 200000;
+  const int samples = 100000;
   const Eigen::Vector3d lo = options.radii * -1.0, box = 2.0 * options.radii;
   int inside = 0;
   Eigen::Vector3d first = Eigen::Vector3d::Zero();
@@ -448,7 +467,7 @@ TEST(MassProperties, AgreesWithMonteCarloOnARandomHull) {
   const Eigen::Vector3d centroid = first / inside;
   const Eigen::Matrix3d about = second * cell - volume * centroid * centroid.transpose();
   const Eigen::Matrix3d inertia = about.trace() * Eigen::Matrix3d::Identity() - about;
-  // 200000 samples with a hit rate ~0.4: ~0.3% standard error; 2% is over 5 sigma.
+  // 100000 samples with a hit rate ~0.4: ~0.4% standard error; 2% is ~5 sigma.
   EXPECT_NEAR(p.volume(), volume, 0.02 * volume);
   EXPECT_LT((p.centroid() - centroid).norm(), 0.02);
   EXPECT_LT((p.inertia() - inertia).norm(), 0.02 * inertia.norm());
@@ -463,12 +482,12 @@ TEST(VoronoiRegions, AgreeWithBruteForceOnSolidsAndRandomHulls) {
     shapes.push_back(MakeSolid(static_cast<PlatonicSolid>(s)));
   shapes.push_back(*MakeNeedle(1.0));
   shapes.push_back(*MakeSlab(1.0));
-  for (int f : {4, 5, 9, 24, 61, 150}) shapes.push_back(*RandomConvexPolyhedron(f, seed + f));
+  for (int f : {4, 5, 9, 24, 61}) shapes.push_back(*RandomConvexPolyhedron(f, seed + f));
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     SCOPED_TRACE("shape " + std::to_string(i) + ", seed " + std::to_string(seed + i) + ": " +
                  Describe(shapes[i]));
     EXPECT_TRUE(VoronoiPlanesAreReciprocal(shapes[i]));
-    EXPECT_TRUE(VoronoiRegionsAgreeWithBruteForce(shapes[i], seed + i, 400));
+    EXPECT_TRUE(VoronoiRegionsAgreeWithBruteForce(shapes[i], seed + i, 200));
   }
 }
 
