@@ -27,7 +27,13 @@ AssertHandler SetAssertHandler(AssertHandler handler);
     if (!(cond)) ::sparsedyn::AssertFailed(#cond, (message), __FILE__, __LINE__); \
   } while (false)
 #else
+// Off: the condition and message are still compiled (never evaluated), so that variables used
+// only in asserts do not become "unused" in release builds.
 #define SPARSEDYN_ASSERT(cond, message) \
   do {                                  \
-  } while (false && (cond))
+    if (false) {                        \
+      (void)(cond);                     \
+      (void)(message);                  \
+    }                                   \
+  } while (false)
 #endif
