@@ -304,11 +304,9 @@ Result<Merged> MergeCoplanarFaces(const std::vector<Eigen::Vector3d>& points,
   return merged;
 }
 
-}  // namespace
-
-Result<ConvexPolyhedron> ConvexPolyhedron::FromMesh(const PolygonMesh& mesh,
-                                                    MeshValidation options) {
-  // Arguments and basic shape of the input.
+// Arguments and the basic shape of the input: finite coordinates, enough faces, faces of at
+// least 3 distinct in-range vertices.
+Status CheckInput(const PolygonMesh& mesh, const MeshValidation& options) {
   if (!(options.tolerance >= 0.0 && options.tolerance < 0.1)) {
     return Error{"MeshValidation::tolerance must be in [0, 0.1), got " + Num(options.tolerance)};
   }
@@ -324,9 +322,8 @@ Result<ConvexPolyhedron> ConvexPolyhedron::FromMesh(const PolygonMesh& mesh,
     return Error{"a polyhedron needs at least 4 faces, the mesh has " +
                  std::to_string(mesh.faces.size())};
   }
-  std::vector<Loop> loops = mesh.faces;
-  for (std::size_t f = 0; f < loops.size(); ++f) {
-    const Loop& loop = loops[f];
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const auto& loop = mesh.faces[f];
     if (loop.size() < 3) {
       return Error{"face " + std::to_string(f) + " has " + std::to_string(loop.size()) +
                    " vertices; a face needs at least 3"};
@@ -343,6 +340,56 @@ Result<ConvexPolyhedron> ConvexPolyhedron::FromMesh(const PolygonMesh& mesh,
       }
     }
   }
+  return Status::Ok();
+}
+
+// Convexity: each face a convex polygon, and no vertex above any face plane (O(V F)).
+Status CheckConvexity(const std::vector<Eigen::Vector3d>& points, const std::vector<Loop>& loops,
+                      const std::vector<FacePlane>& planes, const Names& names, double tolerance,
+                      const std::string& tolerance_text) {
+  for (std::size_t f = 0; f < loops.size(); ++f) {
+    const Loop& loop = loops[f];
+    const Eigen::Vector3d& n = planes[f].normal;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const Eigen::Vector3d& a = points[U(loop[(i + loop.size() - 1) % loop.size()])];
+      const Eigen::Vector3d& b = points[U(loop[i])];
+      const Eigen::Vector3d& c = points[U(loop[(i + 1) % loop.size()])];
+      // Signed distance of c from the line a-b inside the face plane; > 0 turns left (convex).
+      const double turn = (b - a).cross(c - b).dot(n) / (b - a).norm();
+      if (turn < -tolerance) {
+        return Error{names.F(static_cast<std::int32_t>(f)) +
+                     " is not a convex polygon: it turns the wrong way at vertex " +
+                     names.V(loop[i]) + " (by " + Num(-turn) + ", " + tolerance_text + ")"};
+      }
+    }
+  }
+  double worst = 0.0;
+  std::int32_t worst_face = -1, worst_vertex = -1;
+  for (std::size_t f = 0; f < loops.size(); ++f) {
+    const FacePlane& plane = planes[f];
+    for (std::size_t v = 0; v < points.size(); ++v) {
+      const double above = plane.normal.dot(points[v]) - plane.offset;
+      if (above > worst) {
+        worst = above;
+        worst_face = static_cast<std::int32_t>(f);
+        worst_vertex = static_cast<std::int32_t>(v);
+      }
+    }
+  }
+  if (worst > tolerance) {
+    return Error{"the mesh is not convex: vertex " + names.V(worst_vertex) + " lies " + Num(worst) +
+                 " above the plane of " + names.F(worst_face) + " (" + tolerance_text + ")"};
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Result<ConvexPolyhedron> ConvexPolyhedron::FromMesh(const PolygonMesh& mesh,
+                                                    MeshValidation options) {
+  if (Status input = CheckInput(mesh, options); !input) return input.error();
+  const std::size_t input_vertex_count = mesh.vertices.size();
+  std::vector<Loop> loops = mesh.faces;
 
   // Topology of the input: closed, consistently wound, manifold, genus 0.
   Names names;
@@ -468,40 +515,10 @@ Result<ConvexPolyhedron> ConvexPolyhedron::FromMesh(const PolygonMesh& mesh,
     }
   }
 
-  // Convexity: each face a convex polygon, and no vertex above any face plane.
-  for (std::size_t f = 0; f < merged->loops.size(); ++f) {
-    const Loop& loop = merged->loops[f];
-    const Eigen::Vector3d& n = (*result_planes)[f].normal;
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      const Eigen::Vector3d& a = points[U(loop[(i + loop.size() - 1) % loop.size()])];
-      const Eigen::Vector3d& b = points[U(loop[i])];
-      const Eigen::Vector3d& c = points[U(loop[(i + 1) % loop.size()])];
-      // Signed distance of c from the line a-b inside the face plane; > 0 turns left (convex).
-      const double turn = (b - a).cross(c - b).dot(n) / (b - a).norm();
-      if (turn < -tolerance) {
-        return Error{final_names.F(static_cast<std::int32_t>(f)) +
-                     " is not a convex polygon: it turns the wrong way at vertex " +
-                     final_names.V(loop[i]) + " (by " + Num(-turn) + ", " + tolerance_text + ")"};
-      }
-    }
-  }
-  double worst = 0.0;
-  std::int32_t worst_face = -1, worst_vertex = -1;
-  for (std::size_t f = 0; f < merged->loops.size(); ++f) {
-    const FacePlane& plane = (*result_planes)[f];
-    for (std::size_t v = 0; v < points.size(); ++v) {
-      const double above = plane.normal.dot(points[v]) - plane.offset;
-      if (above > worst) {
-        worst = above;
-        worst_face = static_cast<std::int32_t>(f);
-        worst_vertex = static_cast<std::int32_t>(v);
-      }
-    }
-  }
-  if (worst > tolerance) {
-    return Error{"the mesh is not convex: vertex " + final_names.V(worst_vertex) + " lies " +
-                 Num(worst) + " above the plane of " + final_names.F(worst_face) + " (" +
-                 tolerance_text + ")"};
+  if (Status convex = CheckConvexity(points, merged->loops, *result_planes, final_names, tolerance,
+                                     tolerance_text);
+      !convex) {
+    return convex.error();
   }
 
   // Number the result: edge e owns half-edges 2e (in the first face to use it) and 2e + 1.
