@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "events/event.hpp"
+#include "events/heap_queue.hpp"
+#include "sparsedyn/assert.hpp"
+
+namespace sparsedyn {
+
+/// An indexed calendar queue of slots keyed by (time, kind, slot), a drop-in replacement for
+/// HeapQueue: the same interface, one entry per slot, and the same total order, so a World
+/// processes the same events in the same order with either.
+///
+/// Structure (R. Brown, "Calendar queues", CACM 31(10), 1988; the bounded priority queue of
+/// DynamO, Bannerman et al. 2011, which keeps only near-future events sorted):
+/// - a *year* of `BucketCount()` buckets of width `BucketWidth()` starting at an origin time;
+///   an entry with t in [origin + b w, origin + (b + 1) w) lives in bucket b, an unsorted
+///   intrusive list threaded through a per-slot array (no allocation per bucket), so inserting,
+///   erasing or moving it is O(1);
+/// - the *current* bucket is a small indexed binary heap (`near`) that also takes every entry
+///   at or before the current bucket, including times earlier than the head;
+/// - entries beyond the year wait unsorted in an overflow list; when the year is used up the
+///   origin moves to the earliest of them and they are re-bucketed.
+/// Because the bucket of a time is a monotone function of the time, every entry in the heap
+/// precedes every entry in a later bucket, so the heap's top is the queue's head; ties of equal
+/// times always share a bucket and are ordered by (kind, slot) in the heap.
+///
+/// Resizing rule (amortised O(1) per operation): the queue is rebuilt with a bucket count of
+/// the next power of two >= Size() when Size() exceeds twice the bucket count or drops below a
+/// quarter of it; and when, over a window of at least BucketCount() pops, the average pop
+/// either scanned more than 4 empty buckets (width too small) or found more than 24 entries in
+/// the current heap (width too large), i.e. the event spacing drifted. A rebuild sets the
+/// width to 2.5 times the mean spacing of the earliest min(Size() - 1, 256) finite times, and
+/// the origin to the earliest time.
+///
+/// Valid for any non-NaN times, +/-infinity and times earlier than the head included.
+class CalendarQueue {
+ public:
+  CalendarQueue();
+
+  /// True if no slot has an entry.
+  bool Empty() const { return size_ == 0; }
+
+  /// The number of slots with an entry.
+  std::size_t Size() const { return size_; }
+
+  /// True if `slot` has an entry.
+  bool Contains(std::uint32_t slot) const {
+    return slot < entries_.size() && entries_[slot].where != kAbsent;
+  }
+
+  /// The earliest entry by (time, kind, slot). The queue must not be empty.
+  QueueTop Top() const {
+    SPARSEDYN_ASSERT(!near_.empty(), "Top() of an empty queue");
+    return {near_[0].time, static_cast<EventKind>(near_[0].order >> 32),
+            static_cast<std::uint32_t>(near_[0].order)};
+  }
+
+  /// Inserts the slot or moves its entry to the new key. `time` must not be NaN.
+  void Set(std::uint32_t slot, double time, EventKind kind);
+
+  /// Removes the slot's entry if it has one.
+  void Erase(std::uint32_t slot);
+
+  /// Removes the head entry. The queue must not be empty.
+  void Pop();
+
+  /// Removes every entry and returns to the initial bucket layout.
+  void Clear();
+
+  /// Bytes held, for the memory-per-body figure.
+  std::size_t MemoryBytes() const;
+
+  /// The number of buckets in a year (diagnostics and tests).
+  std::size_t BucketCount() const { return heads_.size(); }
+
+  /// The time span of one bucket (diagnostics and tests).
+  double BucketWidth() const { return width_; }
+
+  /// How many times the buckets were rebuilt (diagnostics and tests).
+  std::uint64_t RebuildCount() const { return rebuilds_; }
+
+ private:
+  // A heap entry: the key, with the slot in the low bits of `order`.
+  struct Node {
+    double time;
+    std::uint64_t order;  // kind << 32 | slot: the deterministic tie-break, as in HeapQueue
+  };
+
+  // A slot's entry. In a bucket or the overflow list it is a node of an intrusive doubly
+  // linked list (no allocation per bucket, O(1) unlink); in the heap, `next` is its index there.
+  struct Entry {
+    double time;
+    std::uint32_t next;
+    std::uint32_t prev;
+    std::uint32_t where;  // a bucket index, or kNear, kOverflow, kAbsent
+    EventKind kind;
+  };
+  static constexpr std::uint32_t kAbsent = 0xffffffffu;
+  static constexpr std::uint32_t kNear = 0xfffffffeu;
+  static constexpr std::uint32_t kOverflow = 0xfffffffdu;
+
+  static bool Less(const Node& a, const Node& b) {
+    return a.time < b.time || (a.time == b.time && a.order < b.order);
+  }
+  static std::uint32_t SlotOf(const Node& node) { return static_cast<std::uint32_t>(node.order); }
+  Node NodeOf(std::uint32_t slot) const {
+    return {entries_[slot].time, (static_cast<std::uint64_t>(entries_[slot].kind) << 32) | slot};
+  }
+  std::uint32_t& HeadOf(std::uint32_t where) {
+    return where == kOverflow ? overflow_head_ : heads_[where];
+  }
+
+  std::uint32_t Classify(double time) const;
+  void Link(std::uint32_t slot, std::uint32_t where);
+  void Unlink(std::uint32_t slot);
+  void AfterRemoval();
+  void Refill();
+  void Rollover();
+  void Rebuild();
+  void EstimateWidth();
+  double HeadSpacing();
+  void ResetCounters();
+
+  // The current bucket's indexed binary heap.
+  void NearPlace(std::uint32_t at, const Node& node);
+  void NearPush(const Node& node);
+  void NearErase(std::uint32_t at);
+  void NearUpdate(std::uint32_t at, const Node& node);
+  void NearSiftUp(std::uint32_t at);
+  void NearSiftDown(std::uint32_t at);
+
+  std::vector<Entry> entries_;              // per slot
+  std::vector<Node> near_;                  // heap: the current bucket and anything earlier
+  std::vector<std::uint32_t> heads_;        // the year: first slot of each bucket's list
+  std::uint32_t overflow_head_ = kNoIndex;  // entries at or beyond the end of the year
+  std::vector<std::uint32_t> scratch_;      // slots, reused by Rollover and Rebuild
+  std::vector<double> sample_;              // reused by EstimateWidth
+  std::size_t size_ = 0;
+  double origin_ = 0.0;         // start time of bucket 0
+  double width_ = 1.0;          // time span of one bucket
+  double inverse_width_ = 1.0;  // 1 / width_: Classify multiplies
+  std::uint32_t current_ = 0;   // the bucket whose entries are in near_
+
+  // Cost observed since the last rebuild or check, for the width adaptation.
+  std::uint64_t pops_ = 0;
+  std::uint64_t scan_cost_ = 0;  // empty buckets scanned + entries re-bucketed at year ends
+  std::uint64_t near_sizes_ = 0;
+  double first_pop_time_ = 0.0;  // of the pops counted in pops_
+  double last_pop_time_ = 0.0;
+  std::uint64_t rebuilds_ = 0;
+};
+
+}  // namespace sparsedyn

@@ -1,0 +1,334 @@
+// SPDX-License-Identifier: MIT
+// The event queues (HeapQueue<2>, HeapQueue<4>, CalendarQueue) against their slow twin
+// ReferenceQueue on long random operation streams, plus small exact cases.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "events/calendar_queue.hpp"
+#include "events/heap_queue.hpp"
+#include "events/reference_queue.hpp"
+
+namespace sparsedyn {
+namespace {
+
+constexpr double kHuge = 1e300;
+
+// A queue and the reference driven by the same operations.
+template <typename Queue>
+struct Twin {
+  Queue queue;
+  ReferenceQueue reference;
+
+  void Set(std::uint32_t slot, double time, EventKind kind) {
+    queue.Set(slot, time, kind);
+    reference.Set(slot, time, kind);
+  }
+  void Erase(std::uint32_t slot) {
+    queue.Erase(slot);
+    reference.Erase(slot);
+  }
+  void Pop() {
+    queue.Pop();
+    reference.Pop();
+  }
+  void Clear() {
+    queue.Clear();
+    reference.Clear();
+  }
+
+  // Same emptiness, size, membership of `slot` and head.
+  ::testing::AssertionResult Agrees(std::uint32_t slot) const {
+    if (queue.Empty() != reference.Empty() || queue.Size() != reference.Size()) {
+      return ::testing::AssertionFailure()
+             << "size " << queue.Size() << ", reference " << reference.Size();
+    }
+    if (queue.Contains(slot) != reference.Contains(slot)) {
+      return ::testing::AssertionFailure() << "Contains(" << slot << ") differs";
+    }
+    if (reference.Empty()) return ::testing::AssertionSuccess();
+    const QueueTop a = queue.Top();
+    const QueueTop b = reference.Top();
+    if (a.time != b.time || a.kind != b.kind || a.slot != b.slot) {
+      return ::testing::AssertionFailure() << "top (" << a.time << ", " << static_cast<int>(a.kind)
+                                           << ", " << a.slot << "), reference (" << b.time << ", "
+                                           << static_cast<int>(b.kind) << ", " << b.slot << ")";
+    }
+    return ::testing::AssertionSuccess();
+  }
+};
+
+// Draws the keys of the random streams. Kinds and quantised times make ties frequent.
+class KeySource {
+ public:
+  explicit KeySource(std::uint64_t seed) : rng_(seed) {}
+
+  std::uint32_t Slot(std::uint32_t count) {
+    return std::uniform_int_distribution<std::uint32_t>(0, count - 1)(rng_);
+  }
+  EventKind Kind() { return static_cast<EventKind>(Slot(kEventKindCount)); }
+  double Uniform() { return std::uniform_real_distribution<double>(0.0, 1.0)(rng_); }
+  double Exponential(double mean) {
+    return std::exponential_distribution<double>(1.0 / mean)(rng_);
+  }
+  // Multiples of 1/8 tie often but not always.
+  static double Quantised(double t) { return std::floor(t * 8.0) / 8.0; }
+
+  // Any time, relative to the current head `now`: later, equal, earlier, huge or infinite.
+  double AnyTime(double now) {
+    const double u = Uniform();
+    if (u < 0.35) return Quantised(now + Exponential(1.0));
+    if (u < 0.50) return static_cast<double>(Slot(64));  // absolute, often before the head
+    if (u < 0.60) return now - Exponential(2.0);         // earlier than the head
+    if (u < 0.70) return now + 1000.0 * Uniform();       // far, beyond a year
+    if (u < 0.75) return now;                            // equal to the head
+    if (u < 0.79) return std::numeric_limits<double>::infinity();
+    if (u < 0.82) return kHuge * Uniform();
+    if (u < 0.83) return -kHuge;
+    if (u < 0.835) return -std::numeric_limits<double>::infinity();
+    return now + Exponential(0.01);
+  }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+template <typename Queue>
+double HeadTime(const Queue& queue) {
+  return queue.Empty() ? 0.0 : queue.Top().time;
+}
+
+template <typename Queue>
+class QueueOracle : public ::testing::Test {};
+
+class QueueNames {
+ public:
+  template <typename T>
+  static std::string GetName(int) {
+    if constexpr (std::is_same_v<T, HeapQueue<2>>) return "Heap2";
+    if constexpr (std::is_same_v<T, HeapQueue<4>>) return "Heap4";
+    return "Calendar";
+  }
+};
+
+using QueueTypes = ::testing::Types<HeapQueue<2>, HeapQueue<4>, CalendarQueue>;
+TYPED_TEST_SUITE(QueueOracle, QueueTypes, QueueNames);
+
+// Random Set (insert, earlier, later), Erase and Pop with any times, in phases that grow the
+// queue to thousands of entries and drain it again so that every resize path runs.
+TYPED_TEST(QueueOracle, AgreesWithReferenceOnRandomOperations) {
+  for (const std::uint64_t seed : {20260611u, 7u, 424242u}) {
+    SCOPED_TRACE("seed=" + std::to_string(seed));
+    KeySource keys(seed);
+    Twin<TypeParam> twin;
+    for (int phase = 0; phase < 8; ++phase) {
+      // Even phases mostly insert, odd phases mostly remove; slot ranges vary per phase.
+      const bool grow = phase % 2 == 0;
+      const std::uint32_t slots = phase < 4 ? 300u : 6000u;
+      for (int op = 0; op < 12000; ++op) {
+        const double u = keys.Uniform();
+        std::uint32_t slot = keys.Slot(slots);
+        if (u < (grow ? 0.70 : 0.35)) {
+          twin.Set(slot, keys.AnyTime(HeadTime(twin.reference)), keys.Kind());
+        } else if (u < (grow ? 0.80 : 0.55)) {
+          twin.Erase(slot);
+        } else if (!twin.reference.Empty()) {
+          slot = twin.reference.Top().slot;
+          twin.Pop();
+        }
+        ASSERT_TRUE(twin.Agrees(slot)) << "phase " << phase << ", operation " << op;
+      }
+    }
+    twin.Clear();
+    ASSERT_TRUE(twin.Agrees(0));
+  }
+}
+
+// The classic priority-queue benchmark as a test: pop the head and re-insert its slot at the
+// head time plus an exponential increment (quantised, so that equal times occur).
+TYPED_TEST(QueueOracle, AgreesWithReferenceOnHoldModel) {
+  for (const std::uint32_t n : {100u, 1000u, 20000u}) {
+    const std::uint64_t seed = 1000 + n;
+    SCOPED_TRACE("seed=" + std::to_string(seed) + " n=" + std::to_string(n));
+    KeySource keys(seed);
+    Twin<TypeParam> twin;
+    for (std::uint32_t slot = 0; slot < n; ++slot) {
+      twin.Set(slot, KeySource::Quantised(keys.Exponential(1.0)), keys.Kind());
+    }
+    for (int hold = 0; hold < 60000; ++hold) {
+      const QueueTop top = twin.reference.Top();
+      twin.Pop();
+      twin.Set(top.slot, KeySource::Quantised(top.time + keys.Exponential(1.0)), top.kind);
+      ASSERT_TRUE(twin.Agrees(top.slot)) << "hold " << hold;
+    }
+  }
+}
+
+// The World's pattern: each event re-predicts its own slot and a few others, always at or
+// after the current time, with an event spacing that drifts over twelve orders of magnitude
+// (the calendar queue must re-adapt its width both ways).
+TYPED_TEST(QueueOracle, AgreesWithReferenceOnDriftingSparseDynamics) {
+  const std::uint64_t seed = 99991;
+  SCOPED_TRACE("seed=" + std::to_string(seed));
+  KeySource keys(seed);
+  Twin<TypeParam> twin;
+  constexpr std::uint32_t kSlots = 3000;
+  for (std::uint32_t slot = 0; slot < kSlots; ++slot) {
+    twin.Set(slot, keys.Exponential(1.0), EventKind::kSphereMeet);
+  }
+  const double scales[] = {1.0, 1e-6, 1e6, 1.0};
+  for (const double scale : scales) {
+    for (int event = 0; event < 25000; ++event) {
+      const QueueTop top = twin.reference.Top();
+      twin.Pop();
+      twin.Set(top.slot, top.time + keys.Exponential(scale), keys.Kind());
+      ASSERT_TRUE(twin.Agrees(top.slot)) << "scale " << scale << ", event " << event;
+      const int others = keys.Uniform() < 0.5 ? 1 : 2;
+      for (int k = 0; k < others; ++k) {
+        const std::uint32_t slot = keys.Slot(kSlots);
+        if (keys.Uniform() < 0.05) {
+          twin.Erase(slot);
+        } else {
+          twin.Set(slot, top.time + keys.Exponential(scale), keys.Kind());
+        }
+        ASSERT_TRUE(twin.Agrees(slot)) << "scale " << scale << ", event " << event;
+      }
+    }
+  }
+}
+
+// Every entry at the same time: the order is by kind, then slot.
+TYPED_TEST(QueueOracle, AgreesWithReferenceWhenAllTimesAreEqual) {
+  KeySource keys(5);
+  Twin<TypeParam> twin;
+  for (int op = 0; op < 20000; ++op) {
+    const std::uint32_t slot = keys.Slot(2000);
+    if (keys.Uniform() < 0.6) {
+      twin.Set(slot, 3.0, keys.Kind());
+    } else if (!twin.reference.Empty()) {
+      twin.Pop();
+    }
+    ASSERT_TRUE(twin.Agrees(slot)) << "operation " << op;
+  }
+}
+
+TYPED_TEST(QueueOracle, EmptyQueueHasNoEntries) {
+  TypeParam queue;
+  EXPECT_TRUE(queue.Empty());
+  EXPECT_EQ(queue.Size(), 0u);
+  EXPECT_FALSE(queue.Contains(0));
+  EXPECT_FALSE(queue.Contains(123456));
+  queue.Erase(7);  // erasing an absent slot is a no-op
+  EXPECT_TRUE(queue.Empty());
+  queue.Set(7, 1.0, EventKind::kWallMeet);
+  queue.Pop();
+  EXPECT_TRUE(queue.Empty());
+  EXPECT_FALSE(queue.Contains(7));
+}
+
+TYPED_TEST(QueueOracle, TiesAreBrokenByKindThenSlot) {
+  TypeParam queue;
+  queue.Set(5, 2.0, EventKind::kSphereMeet);
+  queue.Set(9, 2.0, EventKind::kCellCrossing);
+  queue.Set(1, 2.0, EventKind::kSphereMeet);
+  queue.Set(3, 2.0, EventKind::kEngagement);
+  queue.Set(4, 2.0, EventKind::kCellCrossing);
+  queue.Set(8, 1.5, EventKind::kEngagement);
+  const std::uint32_t expected[] = {8, 4, 9, 1, 5, 3};
+  for (const std::uint32_t slot : expected) {
+    ASSERT_FALSE(queue.Empty());
+    EXPECT_EQ(queue.Top().slot, slot);
+    queue.Pop();
+  }
+  EXPECT_TRUE(queue.Empty());
+}
+
+TYPED_TEST(QueueOracle, ErasingTheHeadExposesTheNextEntry) {
+  TypeParam queue;
+  queue.Set(0, 3.0, EventKind::kWallMeet);
+  queue.Set(1, 1.0, EventKind::kWallMeet);
+  queue.Set(2, 2.0, EventKind::kWallMeet);
+  queue.Erase(1);
+  EXPECT_EQ(queue.Top().slot, 2u);
+  EXPECT_EQ(queue.Top().time, 2.0);
+  EXPECT_EQ(queue.Size(), 2u);
+  EXPECT_FALSE(queue.Contains(1));
+}
+
+TYPED_TEST(QueueOracle, UpdatingTheHeadMovesIt) {
+  TypeParam queue;
+  queue.Set(0, 1.0, EventKind::kSphereMeet);
+  queue.Set(1, 2.0, EventKind::kSphereMeet);
+  queue.Set(2, 3.0, EventKind::kSphereMeet);
+  queue.Set(0, 2.5, EventKind::kSphereMeet);  // the head moves later, past slot 1
+  EXPECT_EQ(queue.Top().slot, 1u);
+  queue.Set(2, 0.5, EventKind::kWallMeet);  // the last moves before the head
+  EXPECT_EQ(queue.Top().slot, 2u);
+  EXPECT_EQ(queue.Top().kind, EventKind::kWallMeet);
+  EXPECT_EQ(queue.Size(), 3u);
+  queue.Pop();
+  queue.Pop();
+  EXPECT_EQ(queue.Top().slot, 0u);
+  EXPECT_EQ(queue.Top().time, 2.5);
+}
+
+TYPED_TEST(QueueOracle, InfiniteAndHugeTimesComeLastInOrder) {
+  TypeParam queue;
+  const double inf = std::numeric_limits<double>::infinity();
+  queue.Set(0, inf, EventKind::kSphereMeet);
+  queue.Set(1, kHuge, EventKind::kSphereMeet);
+  queue.Set(2, inf, EventKind::kWallMeet);
+  queue.Set(3, 1.0, EventKind::kSphereMeet);
+  queue.Set(4, -inf, EventKind::kSphereMeet);
+  const std::uint32_t expected[] = {4, 3, 1, 2, 0};
+  for (const std::uint32_t slot : expected) {
+    EXPECT_EQ(queue.Top().slot, slot);
+    queue.Pop();
+  }
+  EXPECT_TRUE(queue.Empty());
+}
+
+// The calendar's bucket count follows the size, and its width follows the event spacing.
+TEST(CalendarQueue, ResizesWithSizeAndAdaptsWidthToSpacing) {
+  CalendarQueue queue;
+  std::mt19937_64 rng(31337);
+  std::exponential_distribution<double> increment(1.0);
+  constexpr std::uint32_t kSlots = 1 << 14;
+  for (std::uint32_t slot = 0; slot < kSlots; ++slot) {
+    queue.Set(slot, increment(rng), EventKind::kSphereMeet);
+  }
+  EXPECT_GE(queue.BucketCount(), kSlots / 2);
+  EXPECT_LE(queue.BucketCount(), kSlots * 2);
+
+  // Hold model with mean increment `scale`; after the change the width must follow the
+  // spacing of the popped times (measured over the last holds).
+  for (const double scale : {1.0, 1e-5, 1e4}) {
+    constexpr int kHolds = 8 * static_cast<int>(kSlots);
+    constexpr int kMeasured = 2000;
+    double first = 0.0;
+    for (int hold = 0; hold < kHolds; ++hold) {
+      const QueueTop top = queue.Top();
+      if (hold == kHolds - kMeasured) first = top.time;
+      queue.Pop();
+      queue.Set(top.slot, top.time + scale * increment(rng), top.kind);
+    }
+    const double spacing = (queue.Top().time - first) / kMeasured;
+    EXPECT_GT(queue.BucketWidth(), 0.2 * spacing) << "scale " << scale;
+    EXPECT_LT(queue.BucketWidth(), 50.0 * spacing) << "scale " << scale;
+  }
+
+  // Draining shrinks the year again.
+  while (queue.Size() > 100) queue.Pop();
+  EXPECT_LE(queue.BucketCount(), 512u);
+  EXPECT_GT(queue.MemoryBytes(), 0u);
+  queue.Clear();
+  EXPECT_TRUE(queue.Empty());
+}
+
+}  // namespace
+}  // namespace sparsedyn
