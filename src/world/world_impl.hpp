@@ -10,6 +10,7 @@
 
 #include "broadphase/all_pairs.hpp"
 #include "broadphase/grid.hpp"
+#include "events/calendar_queue.hpp"
 #include "events/engagements.hpp"
 #include "events/event.hpp"
 #include "events/heap_queue.hpp"
@@ -65,8 +66,8 @@ class World::Impl {
   double max_radius_ = 0.0;
   std::optional<Grid> grid_;
   std::optional<AllPairs> all_pairs_;
-  HeapQueue<4> queue_;              // one slot per element
-  HeapQueue<4> engagement_queue_;   // one slot per engagement
+  CalendarQueue queue_;             // one slot per element
+  CalendarQueue engagement_queue_;  // one slot per engagement
   Engagements engagements_;
   OverlapIndex overlap_index_;  // bodies added before the start, for AddBody's overlap check
 
