@@ -59,7 +59,10 @@ void Grid::Insert(std::uint32_t e, const Vec3& p) {
     prev_.resize(size, kNoIndex);
     cell_of_.resize(size, kNoIndex);
   }
-  const std::uint32_t cell = CellAt(p);
+  Link(e, CellAt(p));
+}
+
+void Grid::Link(std::uint32_t e, std::uint32_t cell) {
   cell_of_[e] = cell;
   prev_[e] = kNoIndex;
   next_[e] = head_[cell];
@@ -121,12 +124,7 @@ Vec3 Grid::Move(std::uint32_t e, int axis, int direction) {
   }
   SPARSEDYN_ASSERT(c[axis] >= 0 && c[axis] < n_[axis], "Grid::Move outside a walled grid");
   Remove(e);
-  const std::uint32_t cell = Index(c);
-  cell_of_[e] = cell;
-  prev_[e] = kNoIndex;
-  next_[e] = head_[cell];
-  if (head_[cell] != kNoIndex) prev_[head_[cell]] = e;
-  head_[cell] = e;
+  Link(e, Index(c));
   return shift;
 }
 

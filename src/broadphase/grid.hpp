@@ -95,6 +95,7 @@ class Grid {
     return static_cast<std::uint32_t>((c[2] * n_[1] + c[1]) * n_[0] + c[0]);
   }
   std::uint32_t CellAt(const Vec3& p) const;
+  void Link(std::uint32_t e, std::uint32_t cell);  // pushes e onto the cell's list
 
   template <typename Fn>
   void VisitCell(std::uint32_t e, std::array<int, 3> at, Fn& fn) const {

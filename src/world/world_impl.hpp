@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
 #include "broadphase/all_pairs.hpp"
@@ -59,7 +58,6 @@ class World::Impl {
     std::uint32_t target_version = 0;
   };
   std::vector<Candidate> candidate_;
-  Vec3 thrust_default_ = Vec3::Zero();
 
   bool started_ = false;
   bool has_envelopes_ = false;
@@ -88,7 +86,7 @@ class World::Impl {
   template <typename Broadphase>
   void PredictNewCellsWith(const Broadphase& broadphase, std::uint32_t i, int axis, int direction);
   void ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift, Candidate& best);
-  void FinishPrediction(std::uint32_t i, const Candidate& best);
+  Event FinishPrediction(std::uint32_t i, const Candidate& best);
   double PredictWall(const Mover& mi, std::uint8_t& wall) const;
   void Schedule(std::uint32_t i, const Event& event);
   void PredictEngagement(std::uint32_t k);
@@ -100,12 +98,32 @@ class World::Impl {
   void HandleWallMeet(std::uint32_t i);
   void HandleCellCrossing(std::uint32_t i);
   void HandleEngagement(std::uint32_t k);
-  void Collide(std::uint32_t i, std::uint32_t j);
+  void Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, double gap);
   void SetVelocity(std::uint32_t i, const Vec3& v);
   bool TouchingAndApproaching(std::uint32_t i, std::uint32_t j, Vec3& normal, double& gap) const;
   void NotePenetration(double gap);
 
   friend class World;
+};
+
+/// Adds the seconds of its lifetime to `sink` when `enabled` (WorldSettings::profile_phases);
+/// costs nothing but a branch otherwise.
+class PhaseTimer {
+ public:
+  PhaseTimer(bool enabled, double& sink) : sink_(enabled ? &sink : nullptr) {
+    if (sink_ != nullptr) start_ = std::chrono::steady_clock::now();
+  }
+  ~PhaseTimer() {
+    if (sink_ != nullptr) {
+      *sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+  }
+  PhaseTimer(const PhaseTimer&) = delete;
+  PhaseTimer& operator=(const PhaseTimer&) = delete;
+
+ private:
+  double* sink_;
+  std::chrono::steady_clock::time_point start_;
 };
 
 /// Wall planes of a walled box: inward unit normal n and offset d (n.x >= d inside).

@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: MIT
 // The event loop: a short dispatcher over event kinds and one handler per kind.
-#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -126,7 +125,7 @@ void World::Impl::HandleSphereMeet(std::uint32_t i) {
     PredictFull(i);
     return;
   }
-  Collide(i, j);
+  Collide(i, j, normal, gap);
 }
 
 void World::Impl::NotePenetration(double gap) {
@@ -139,25 +138,19 @@ void World::Impl::SetVelocity(std::uint32_t i, const Vec3& v) {
   ++version_[i];
 }
 
-void World::Impl::Collide(std::uint32_t i, std::uint32_t j) {
-  const auto start = settings_.profile_phases ? std::chrono::steady_clock::now()
-                                              : std::chrono::steady_clock::time_point{};
-  Vec3 normal;
-  double gap = 0;
-  TouchingAndApproaching(i, j, normal, gap);
+void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, double gap) {
   NotePenetration(gap);
-  const ImpulseResult result =
-      SphereImpulse(paths_[i].VelocityAt(now_), paths_[j].VelocityAt(now_), inv_mass_[i],
-                    inv_mass_[j], normal, restitution_[i] * restitution_[j],
-                    settings_.elastic_below_speed);
-  SetVelocity(i, result.v_a);
-  SetVelocity(j, result.v_b);
+  ImpulseResult result;
+  {
+    const PhaseTimer timer(settings_.profile_phases, stats_.seconds_response);
+    result = SphereImpulse(paths_[i].VelocityAt(now_), paths_[j].VelocityAt(now_), inv_mass_[i],
+                           inv_mass_[j], normal, restitution_[i] * restitution_[j],
+                           settings_.elastic_below_speed);
+    SetVelocity(i, result.v_a);
+    SetVelocity(j, result.v_b);
+  }
   ++stats_.collisions;
   if (result.guarded) ++stats_.collapse_guarded;
-  if (settings_.profile_phases) {
-    stats_.seconds_response +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
   if (on_collision_) {
     const Vec3 p_i = paths_[i].p0;
     on_collision_(CollisionEvent{now_, BodyId{i, 0}, BodyId{j, 0}, -1,
@@ -188,10 +181,14 @@ void World::Impl::HandleWallMeet(std::uint32_t i) {
     return;
   }
   NotePenetration(gap);
-  // A static wall has infinite mass: the body's normal velocity is reversed and scaled by e.
-  const ImpulseResult result = SphereImpulse(v, Vec3::Zero(), inv_mass_[i], 0.0, -plane.normal,
-                                             restitution_[i], settings_.elastic_below_speed);
-  SetVelocity(i, result.v_a);
+  ImpulseResult result;
+  {
+    // A static wall has infinite mass: the body's normal velocity is reversed and scaled by e.
+    const PhaseTimer timer(settings_.profile_phases, stats_.seconds_response);
+    result = SphereImpulse(v, Vec3::Zero(), inv_mass_[i], 0.0, -plane.normal, restitution_[i],
+                           settings_.elastic_below_speed);
+    SetVelocity(i, result.v_a);
+  }
   ++stats_.wall_collisions;
   if (result.guarded) ++stats_.collapse_guarded;
   if (on_collision_) {
@@ -208,7 +205,7 @@ void World::Impl::HandleEngagement(std::uint32_t k) {
     Vec3 normal;
     double gap = 0;
     if (TouchingAndApproaching(e.a, e.b, normal, gap)) {
-      Collide(e.a, e.b);
+      Collide(e.a, e.b, normal, gap);
       return;
     }
     if (gap > settings_.contact_tolerance * (radius_[e.a] + radius_[e.b])) ++stats_.early_events;

@@ -59,7 +59,7 @@ double World::Impl::PredictWall(const Mover& mi, std::uint8_t& wall) const {
   return best;
 }
 
-void World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
+Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
   candidate_[i] = best;
   Event event;
   event.time = best.time;
@@ -71,14 +71,13 @@ void World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
   // Walls are met by the body itself (exact and static: no envelope applies), predicted from the
   // segment start so that the time does not depend on when the prediction is made.
   const double t0 = paths_[i].t0;
-  const double wall_time =
-      std::max(now_, EventTime(t0, PredictWall(BodyMoverOf(i, t0), wall)));
+  const Mover m0 = BodyMoverOf(i, t0);
+  const double wall_time = std::max(now_, EventTime(t0, PredictWall(m0, wall)));
   if (wall_time < event.time) event = Event{wall_time, EventKind::kWallMeet, wall, kNoIndex, 0};
 
   // The crossing, too, from the segment start (a periodic wrap then happens at the same time
   // whichever broad phase predicts it), but not before now.
   int axis = 0, direction = 1;
-  const Mover m0 = BodyMoverOf(i, t0);
   const double crossing_dt =
       grid_ ? grid_->PredictCrossing(m0, grid_->CellOf(i), now_ - t0, axis, direction)
             : all_pairs_->PredictCrossing(m0, 0, now_ - t0, axis, direction);
@@ -87,10 +86,11 @@ void World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
     event = Event{crossing_time, EventKind::kCellCrossing,
                   static_cast<std::uint8_t>(axis * 2 + (direction > 0 ? 1 : 0)), kNoIndex, 0};
   }
-  Schedule(i, event);
+  return event;
 }
 
 void World::Impl::Schedule(std::uint32_t i, const Event& event) {
+  const PhaseTimer timer(settings_.profile_phases, stats_.seconds_queue);
   event_[i] = event;
   if (event.kind == EventKind::kNone) {
     queue_.Erase(i);
@@ -101,10 +101,15 @@ void World::Impl::Schedule(std::uint32_t i, const Event& event) {
 
 template <typename Broadphase>
 void World::Impl::PredictWith(const Broadphase& broadphase, std::uint32_t i) {
-  Candidate best;
-  broadphase.ForEachNeighbor(
-      i, [&](std::uint32_t j, const Vec3& shift) { ConsiderMeeting(i, j, shift, best); });
-  FinishPrediction(i, best);
+  Event event;
+  {
+    const PhaseTimer timer(settings_.profile_phases, stats_.seconds_sparse);
+    Candidate best;
+    broadphase.ForEachNeighbor(
+        i, [&](std::uint32_t j, const Vec3& shift) { ConsiderMeeting(i, j, shift, best); });
+    event = FinishPrediction(i, best);
+  }
+  Schedule(i, event);
 }
 
 void World::Impl::PredictFull(std::uint32_t i) {
@@ -119,11 +124,16 @@ void World::Impl::PredictFull(std::uint32_t i) {
 template <typename Broadphase>
 void World::Impl::PredictNewCellsWith(const Broadphase& broadphase, std::uint32_t i, int axis,
                                       int direction) {
-  Candidate best = candidate_[i];
-  broadphase.ForEachNewNeighbor(i, axis, direction, [&](std::uint32_t j, const Vec3& shift) {
-    ConsiderMeeting(i, j, shift, best);
-  });
-  FinishPrediction(i, best);
+  Event event;
+  {
+    const PhaseTimer timer(settings_.profile_phases, stats_.seconds_sparse);
+    Candidate best = candidate_[i];
+    broadphase.ForEachNewNeighbor(i, axis, direction, [&](std::uint32_t j, const Vec3& shift) {
+      ConsiderMeeting(i, j, shift, best);
+    });
+    event = FinishPrediction(i, best);
+  }
+  Schedule(i, event);
 }
 
 void World::Impl::PredictAfterCrossing(std::uint32_t i, int axis, int direction) {
@@ -142,8 +152,9 @@ void World::Impl::PredictAfterCrossing(std::uint32_t i, int axis, int direction)
 
 void World::Impl::PredictEngagement(std::uint32_t k) {
   Engagements::Engagement& e = engagements_[k];
-  const Vec3 shift = MinimumImage(paths_[e.b].PositionAt(now_) - paths_[e.a].PositionAt(now_)) -
-                     (paths_[e.b].PositionAt(now_) - paths_[e.a].PositionAt(now_));
+  // The periodic image of b nearest to a (zero shift outside periodic boxes).
+  const Vec3 d = paths_[e.b].PositionAt(now_) - paths_[e.a].PositionAt(now_);
+  const Vec3 shift = MinimumImage(d) - d;
   // Contact of the bodies themselves (the detailed phase for spheres) or separation of the
   // element spheres, whichever comes first.
   const double contact = PredictMeeting(BodyMoverOf(e.a, now_), BodyMoverOf(e.b, now_), shift);

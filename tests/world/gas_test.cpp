@@ -138,6 +138,26 @@ TEST(Gas, SameSeedGivesBitIdenticalRuns) {
   EXPECT_EQ(0, std::memcmp(first.data(), second.data(), first.size() * sizeof(double)));
 }
 
+TEST(Gas, PhaseTimesAreMeasuredOnlyWhenProfiling) {
+  scenes::GasOptions options;
+  options.n = 500;
+  for (const bool profile : {false, true}) {
+    WorldSettings settings;
+    settings.profile_phases = profile;
+    World world = *scenes::MakeGas(options, settings);
+    ASSERT_TRUE(world.AdvanceTo(10));
+    const Statistics& stats = world.Stats();
+    ASSERT_GT(stats.collisions, 100u);
+    if (profile) {
+      EXPECT_GT(stats.seconds_sparse, 0.0);
+      EXPECT_GT(stats.seconds_queue, 0.0);
+      EXPECT_GT(stats.seconds_response, 0.0);
+    } else {
+      EXPECT_EQ(stats.seconds_sparse + stats.seconds_queue + stats.seconds_response, 0.0);
+    }
+  }
+}
+
 TEST(Gas, InelasticGasCoolsWithoutStallingThanksToTheCollapseGuard) {
   scenes::GasOptions options;
   options.n = 400;
