@@ -18,21 +18,7 @@ TEST(MeetingTimeSlow, HundredThousandRandomPairsNeverLateNeverMissed) {
   scenes::Random random(77);
   int met = 0, late = 0, missed = 0;
   for (int trial = 0; trial < 100000; ++trial) {
-    auto vec = [&](double s) {
-      return Vec3(random.Uniform(-s, s), random.Uniform(-s, s), random.Uniform(-s, s));
-    };
-    Mover a{vec(5), vec(2), Vec3::Zero(), random.Uniform(0.1, 1), 0, 0};
-    Mover b{vec(5), vec(2), Vec3::Zero(), random.Uniform(0.1, 1), 0, 0};
-    // Aim b roughly at a so that most pairs meet, some graze and some miss.
-    b.v = a.v + (a.p - b.p).normalized() * random.Uniform(0.5, 2) + vec(0.5);
-    if (trial % 2 == 1) {
-      a.a = vec(1);
-      b.a = vec(1);
-    }
-    if (trial % 3 == 2) {
-      a.r1 = random.Uniform(0, 0.2);
-      b.r2 = random.Uniform(0, 0.1);
-    }
+    const auto [a, b] = testing::RandomMoverPair(random, trial % 2 == 1, trial % 3 == 2);
     if (testing::OracleGap(a, b, 0) <= 0) continue;
     const double predicted = PredictMeeting(a, b, Vec3::Zero(), kHorizon);
     const std::optional<long double> truth = testing::OracleMeeting(a, b, kHorizon, 1000);

@@ -151,22 +151,8 @@ void CheckRandomPairs(int pairs, std::uint64_t seed) {
   scenes::Random random(seed);
   int met = 0, late = 0, missed = 0, spurious = 0;
   for (int trial = 0; trial < pairs; ++trial) {
-    auto vec = [&](double s) {
-      return Vec3(random.Uniform(-s, s), random.Uniform(-s, s), random.Uniform(-s, s));
-    };
-    Mover a{vec(5), vec(2), Vec3::Zero(), random.Uniform(0.1, 1), 0, 0};
-    Mover b{vec(5), vec(2), Vec3::Zero(), random.Uniform(0.1, 1), 0, 0};
-    // Aim b roughly at a so that most pairs meet, some graze and some miss.
-    b.v = a.v + (a.p - b.p).normalized() * random.Uniform(0.5, 2) + vec(0.5);
     const int kind = trial % 4;  // linear, accelerated, envelope, accelerated + envelope
-    if (kind == 1 || kind == 3) {
-      a.a = vec(1);
-      b.a = vec(1);
-    }
-    if (kind >= 2) {
-      a.r1 = random.Uniform(0, 0.2);
-      b.r2 = random.Uniform(0, 0.1);
-    }
+    const auto [a, b] = testing::RandomMoverPair(random, kind == 1 || kind == 3, kind >= 2);
     if (testing::OracleGap(a, b, 0) <= 0) continue;  // start separated
     SCOPED_TRACE(::testing::Message() << "seed " << seed << " trial " << trial);
     const double predicted = PredictMeeting(a, b, Vec3::Zero(), kHorizon);

@@ -6,19 +6,30 @@ namespace {
 
 constexpr int kBisections = 200;
 
-long double GapDerivative(const Mover& a, const Mover& b, long double t) {
-  long double qdq = 0;
+// g(dt) = |dp(dt)|^2 - R(dt)^2 and its derivative, in long double.
+void GapAndSlope(const Mover& a, const Mover& b, long double t, long double& g,
+                 long double& dg) {
+  long double q2 = 0, qdq = 0;
   for (int k = 0; k < 3; ++k) {
     const long double dp = static_cast<long double>(b.p[k]) - a.p[k];
     const long double dv = static_cast<long double>(b.v[k]) - a.v[k];
     const long double da = static_cast<long double>(b.a[k]) - a.a[k];
-    qdq += (dp + t * (dv + 0.5L * t * da)) * (dv + t * da);
+    const long double q = dp + t * (dv + 0.5L * t * da);
+    q2 += q * q;
+    qdq += q * (dv + t * da);
   }
   const long double r0 = static_cast<long double>(a.r0) + b.r0;
   const long double r1 = static_cast<long double>(a.r1) + b.r1;
   const long double r2 = static_cast<long double>(a.r2) + b.r2;
   const long double r = r0 + t * (r1 + 0.5L * t * r2);
-  return 2 * (qdq - r * (r1 + t * r2));
+  g = q2 - r * r;
+  dg = 2 * (qdq - r * (r1 + t * r2));
+}
+
+long double GapDerivative(const Mover& a, const Mover& b, long double t) {
+  long double g, dg;
+  GapAndSlope(a, b, t, g, dg);
+  return dg;
 }
 
 // The first point of [lo, hi] where g <= 0, given g(lo) > 0 >= g(hi).
@@ -34,19 +45,27 @@ long double BisectRoot(const Mover& a, const Mover& b, long double lo, long doub
 }  // namespace
 
 long double OracleGap(const Mover& a, const Mover& b, long double t) {
-  long double q2 = 0;
-  for (int k = 0; k < 3; ++k) {
-    const long double dp = static_cast<long double>(b.p[k]) - a.p[k];
-    const long double dv = static_cast<long double>(b.v[k]) - a.v[k];
-    const long double da = static_cast<long double>(b.a[k]) - a.a[k];
-    const long double q = dp + t * (dv + 0.5L * t * da);
-    q2 += q * q;
+  long double g, dg;
+  GapAndSlope(a, b, t, g, dg);
+  return g;
+}
+
+std::pair<Mover, Mover> RandomMoverPair(scenes::Random& random, bool accelerated, bool envelope) {
+  auto vec = [&](double s) {
+    return Vec3(random.Uniform(-s, s), random.Uniform(-s, s), random.Uniform(-s, s));
+  };
+  Mover a{vec(5), vec(2), Vec3::Zero(), random.Uniform(0.1, 1), 0, 0};
+  Mover b{vec(5), vec(2), Vec3::Zero(), random.Uniform(0.1, 1), 0, 0};
+  b.v = a.v + (a.p - b.p).normalized() * random.Uniform(0.5, 2) + vec(0.5);
+  if (accelerated) {
+    a.a = vec(1);
+    b.a = vec(1);
   }
-  const long double r0 = static_cast<long double>(a.r0) + b.r0;
-  const long double r1 = static_cast<long double>(a.r1) + b.r1;
-  const long double r2 = static_cast<long double>(a.r2) + b.r2;
-  const long double r = r0 + t * (r1 + 0.5L * t * r2);
-  return q2 - r * r;
+  if (envelope) {
+    a.r1 = random.Uniform(0, 0.2);
+    b.r2 = random.Uniform(0, 0.1);
+  }
+  return {a, b};
 }
 
 std::optional<long double> OracleMeeting(const Mover& a, const Mover& b, long double horizon,
