@@ -82,6 +82,20 @@ struct CollisionEvent {
   double impulse = 0.0;         // N s along the normal
 };
 
+/// A new motion segment of one body: from `t0` on its centre follows
+/// position + velocity (t - t0) + acceleration (t - t0)^2 / 2 until its next segment. Reported to
+/// OnSegment callbacks whenever a body's path changes (a collision); the first segment of every
+/// body is its BodyDef at the time it was added. In a periodic box positions are not wrapped
+/// into the box between segments: wrap them when drawing.
+struct MotionSegment {
+  double t0 = 0.0;
+  BodyId body;
+  Vec3 position = Vec3::Zero();
+  Vec3 velocity = Vec3::Zero();
+  Vec3 acceleration = Vec3::Zero();
+  std::uint32_t version = 0;  // the body's segment count after this change
+};
+
 /// Owns the bodies and runs the event loop: the sparse phase of the thesis (§3-§4) for
 /// spheres. Nothing is computed between events; a body's state at any time comes from its path.
 class World {
@@ -112,6 +126,10 @@ class World {
 
   /// Called after every resolved collision (body-body and body-wall), in event order.
   void OnCollision(std::function<void(const CollisionEvent&)> callback);
+  /// Called after every change of a body's path (both bodies of a collision, in the order
+  /// a, b, before the OnCollision call of that collision), in event order. With the
+  /// StateAt of every body at the start, these segments reproduce every body's motion exactly.
+  void OnSegment(std::function<void(const MotionSegment&)> callback);
 
   const Statistics& Stats() const;
   const WorldSettings& Settings() const;

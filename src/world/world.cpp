@@ -314,6 +314,9 @@ BodyId World::IdOf(std::uint32_t index) const { return BodyId{index, 0}; }
 void World::OnCollision(std::function<void(const CollisionEvent&)> callback) {
   impl_->on_collision_ = std::move(callback);
 }
+void World::OnSegment(std::function<void(const MotionSegment&)> callback) {
+  impl_->on_segment_ = std::move(callback);
+}
 const Statistics& World::Stats() const { return impl_->stats_; }
 const WorldSettings& World::Settings() const { return impl_->settings_; }
 double World::KineticEnergy() const { return impl_->KineticEnergy(); }

@@ -41,6 +41,7 @@ class World::Impl {
   WorldSettings settings_;
   Statistics stats_;
   std::function<void(const CollisionEvent&)> on_collision_;
+  std::function<void(const MotionSegment&)> on_segment_;
   double now_ = 0.0;
   double max_penetration_ = 0.0;
 

@@ -136,6 +136,7 @@ void World::Impl::SetVelocity(std::uint32_t i, const Vec3& v) {
   Path& path = paths_[i];
   path = Path{path.PositionAt(now_), v, path.a, now_};
   ++version_[i];
+  if (on_segment_) on_segment_(MotionSegment{now_, BodyId{i, 0}, path.p0, v, path.a, version_[i]});
 }
 
 void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, double gap) {
