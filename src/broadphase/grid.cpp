@@ -128,6 +128,32 @@ Vec3 Grid::Move(std::uint32_t e, int axis, int direction) {
   return shift;
 }
 
+void Grid::Permute(const std::vector<std::uint32_t>& old_of_new) {
+  const std::vector<std::uint32_t> old_cell_of = cell_of_;
+  std::fill(head_.begin(), head_.end(), kNoIndex);
+  std::fill(cell_of_.begin(), cell_of_.end(), kNoIndex);
+  // Linking pushes to the front: link in decreasing order so lists run in increasing order.
+  for (std::size_t e = old_of_new.size(); e-- > 0;) {
+    Link(static_cast<std::uint32_t>(e), old_cell_of[old_of_new[e]]);
+  }
+}
+
+std::uint64_t Grid::MortonKey(std::uint32_t cell) const {
+  // Spreads the low 21 bits of x so that they occupy every third bit.
+  auto spread = [](std::uint64_t x) {
+    x &= 0x1fffff;
+    x = (x | x << 32) & 0x1f00000000ffffULL;
+    x = (x | x << 16) & 0x1f0000ff0000ffULL;
+    x = (x | x << 8) & 0x100f00f00f00f00fULL;
+    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+    x = (x | x << 2) & 0x1249249249249249ULL;
+    return x;
+  };
+  const std::array<int, 3> c = Coordinates(cell);
+  return spread(static_cast<std::uint64_t>(c[0])) | spread(static_cast<std::uint64_t>(c[1])) << 1 |
+         spread(static_cast<std::uint64_t>(c[2])) << 2;
+}
+
 std::size_t Grid::MemoryBytes() const {
   return (head_.capacity() + next_.capacity() + prev_.capacity() + cell_of_.capacity()) *
          sizeof(std::uint32_t);

@@ -53,13 +53,11 @@ class Grid {
   template <typename Fn>
   void ForEachNeighbor(std::uint32_t e, Fn&& fn) const {
     const std::array<int, 3> c = Coordinates(cell_of_[e]);
-    for (int dz = -1; dz <= 1; ++dz) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          VisitCell(e, {c[0] + dx, c[1] + dy, c[2] + dz}, fn);
-        }
-      }
-    }
+    Span x{}, y{}, z{};
+    Around(0, c[0], x);
+    Around(1, c[1], y);
+    Around(2, c[2], z);
+    VisitBlock(e, x, y, z, fn);
   }
 
   /// Calls fn(j, shift_j) for the elements in the 9 cells that became adjacent to e when it
@@ -67,18 +65,24 @@ class Grid {
   template <typename Fn>
   void ForEachNewNeighbor(std::uint32_t e, int axis, int direction, Fn&& fn) const {
     const std::array<int, 3> c = Coordinates(cell_of_[e]);
-    const int u = (axis + 1) % 3;
-    const int w = (axis + 2) % 3;
-    std::array<int, 3> at{};
-    at[axis] = c[axis] + direction;
-    for (int du = -1; du <= 1; ++du) {
-      for (int dw = -1; dw <= 1; ++dw) {
-        at[u] = c[u] + du;
-        at[w] = c[w] + dw;
-        VisitCell(e, at, fn);
+    std::array<Span, 3> spans{};
+    for (int k = 0; k < 3; ++k) {
+      if (k == axis) {
+        Single(k, c[k] + direction, spans[k]);
+      } else {
+        Around(k, c[k], spans[k]);
       }
     }
+    VisitBlock(e, spans[0], spans[1], spans[2], fn);
   }
+
+  /// The elements renumbered: element `old_of_new[e]` becomes element e, keeping its cell.
+  /// Each cell's list is rebuilt in increasing element order.
+  void Permute(const std::vector<std::uint32_t>& old_of_new);
+
+  /// A key that orders cells along a Morton (Z-order) curve: cells near in space get keys near
+  /// each other, so elements sorted by it are near in memory when they are near in space.
+  std::uint64_t MortonKey(std::uint32_t cell) const;
 
   const std::array<int, 3>& Dimensions() const { return n_; }
   double CellSize(int axis) const { return size_[axis]; }
@@ -97,22 +101,49 @@ class Grid {
   std::uint32_t CellAt(const Vec3& p) const;
   void Link(std::uint32_t e, std::uint32_t cell);  // pushes e onto the cell's list
 
-  template <typename Fn>
-  void VisitCell(std::uint32_t e, std::array<int, 3> at, Fn& fn) const {
-    Vec3 shift = Vec3::Zero();
-    for (int k = 0; k < 3; ++k) {
-      if (at[k] < 0) {
-        if (!periodic_) return;
-        at[k] += n_[k];
-        shift[k] = -length_[k];
-      } else if (at[k] >= n_[k]) {
-        if (!periodic_) return;
-        at[k] -= n_[k];
-        shift[k] = length_[k];
-      }
+  // Up to three cells along one axis: their coordinate offsets (already multiplied by the
+  // axis stride) and periodic image shifts; cells outside a walled grid are left out.
+  struct Span {
+    std::array<std::uint32_t, 3> offset;
+    std::array<double, 3> shift;
+    int count;
+  };
+  static std::uint32_t Stride(const std::array<int, 3>& n, int axis) {
+    return axis == 0 ? 1u : (axis == 1 ? static_cast<std::uint32_t>(n[0])
+                                       : static_cast<std::uint32_t>(n[0] * n[1]));
+  }
+  void Single(int axis, int at, Span& span) const {
+    double shift = 0.0;
+    if (at < 0) {
+      if (!periodic_) return;
+      at += n_[axis];
+      shift = -length_[axis];
+    } else if (at >= n_[axis]) {
+      if (!periodic_) return;
+      at -= n_[axis];
+      shift = length_[axis];
     }
-    for (std::uint32_t j = head_[Index(at)]; j != kNoIndex; j = next_[j]) {
-      if (j != e) fn(j, shift);
+    span.offset[span.count] = static_cast<std::uint32_t>(at) * Stride(n_, axis);
+    span.shift[span.count] = shift;
+    ++span.count;
+  }
+  void Around(int axis, int at, Span& span) const {
+    for (int d = -1; d <= 1; ++d) Single(axis, at + d, span);
+  }
+  template <typename Fn>
+  void VisitBlock(std::uint32_t e, const Span& x, const Span& y, const Span& z, Fn& fn) const {
+    for (int iz = 0; iz < z.count; ++iz) {
+      for (int iy = 0; iy < y.count; ++iy) {
+        const std::uint32_t row = z.offset[iz] + y.offset[iy];
+        for (int ix = 0; ix < x.count; ++ix) {
+          std::uint32_t j = head_[row + x.offset[ix]];
+          if (j == kNoIndex) continue;
+          const Vec3 shift(x.shift[ix], y.shift[iy], z.shift[iz]);
+          for (; j != kNoIndex; j = next_[j]) {
+            if (j != e) fn(j, shift);
+          }
+        }
+      }
     }
   }
 

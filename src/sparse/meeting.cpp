@@ -141,26 +141,22 @@ double PredictMeeting(const Mover& a, const Mover& b, const Vec3& shift_b, doubl
   const double r0 = a.r0 + b.r0;
   const double r1 = a.r1 + b.r1;
   const double r2 = a.r2 + b.r2;
-  double dt = kInfinity;
-
   if (da.isZero(0.0) && r1 == 0.0 && r2 == 0.0) {
-    // Linear relative motion: A dt^2 + B dt + C = 0 with A >= 0 (App. F.1).
-    const double b_half = dp.dot(dv);
-    if (b_half >= 0) return kInfinity;  // Not approaching: with A >= 0, never again.
-    const double c = dp.dot(dp) - r0 * r0;
-    if (c <= 0) return 0.0;  // Overlapping by round-off and approaching: meet now.
-    const double a_coef = dv.dot(dv);
-    const double disc = b_half * b_half - a_coef * c;
-    if (disc < 0) return kInfinity;
-    // Smaller root without cancellation: dt = C / (-B/2 + sqrt(disc)).
-    dt = c / (-b_half + std::sqrt(disc));
-  } else {
-    dt = EarliestEntry(GapPolynomial(dp, dv, da, r0, r1, r2), horizon);
+    return PredictLinearMeeting(a.p, a.v, b.p, b.v, shift_b, r0, horizon);
   }
+  const double dt = EarliestEntry(GapPolynomial(dp, dv, da, r0, r1, r2), horizon);
   if (!(dt <= horizon)) return kInfinity;
   if (dt == 0.0) return 0.0;
 
   const Gap gap(a, b, shift_b);
+  return CertifyNotLate(dt, [&gap](long double t, long double& g, long double& dg,
+                                   long double& e) { gap.Evaluate(t, g, dg, e); });
+}
+
+double CertifyLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb,
+                            const Vec3& shift_b, double reach, double dt) {
+  const Gap gap(Mover{pa, va, Vec3::Zero(), 0.0, 0.0, 0.0},
+                Mover{pb, vb, Vec3::Zero(), reach, 0.0, 0.0}, shift_b);
   return CertifyNotLate(dt, [&gap](long double t, long double& g, long double& dg,
                                    long double& e) { gap.Evaluate(t, g, dg, e); });
 }

@@ -107,7 +107,7 @@ std::optional<std::uint32_t> World::Impl::FindOverlap(const Vec3& p, double radi
   }
   // Bodies added while running (rare) are compared with every body at the current time.
   for (std::uint32_t j = 0; j < paths_.size(); ++j) {
-    if (overlaps(paths_[j].PositionAt(now_), radius_[j])) return j;
+    if (overlaps(paths_[j].PositionAt(now_), radius_[j])) return public_of_[j];
   }
   return std::nullopt;
 }
@@ -158,6 +158,8 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   }
   if (has_envelopes_) envelope_.push_back(def.envelope);
   version_.push_back(0);
+  public_of_.push_back(static_cast<std::uint32_t>(index));
+  internal_of_.push_back(static_cast<std::uint32_t>(index));
   event_.emplace_back();
   candidate_.emplace_back();
   const bool larger = def.radius > max_radius_;
@@ -191,6 +193,9 @@ void World::Impl::Start() {
     paths_[i].p0 = WrapIntoBox(paths_[i].p0);
   }
 
+  straight_lines_ = !has_envelopes_;
+  for (std::uint32_t i = 0; i < n && straight_lines_; ++i) straight_lines_ = paths_[i].a.isZero(0.0);
+
   // The grid needs a box and bounded element radii (an envelope grows without bound).
   const bool boxed = box.kind != Container::Kind::kOpen;
   if (settings_.broadphase == Broadphase::kGrid && boxed && !has_envelopes_ && n > 0) {
@@ -216,6 +221,8 @@ void World::Impl::Start() {
     if (grid_) grid_->Insert(i, paths_[i].p0);
     if (all_pairs_) all_pairs_->Insert(i, paths_[i].p0);
   }
+  if (grid_) Reorder();  // start in spatial order
+  events_since_reorder_ = 0;
   for (std::uint32_t i = 0; i < n; ++i) PredictFull(i);
 }
 
@@ -226,8 +233,9 @@ BodyState World::Impl::StateAt(std::uint32_t i, double t) const {
 }
 
 double World::Impl::KineticEnergy() const {
+  // Summed in public order: the result does not depend on the memory order (Reorder).
   double energy = 0;
-  for (std::size_t i = 0; i < paths_.size(); ++i) {
+  for (const std::uint32_t i : internal_of_) {
     energy += 0.5 / inv_mass_[i] * paths_[i].VelocityAt(now_).squaredNorm();
   }
   return energy;
@@ -235,7 +243,7 @@ double World::Impl::KineticEnergy() const {
 
 Vec3 World::Impl::Momentum() const {
   Vec3 momentum = Vec3::Zero();
-  for (std::size_t i = 0; i < paths_.size(); ++i) {
+  for (const std::uint32_t i : internal_of_) {
     momentum += paths_[i].VelocityAt(now_) / inv_mass_[i];
   }
   return momentum;
@@ -249,7 +257,8 @@ Status World::Impl::Validate() const {
     const double reach = radius_[i] + radius_[j];
     const double gap = d.norm() - reach;
     if (gap < -tolerance * reach) {
-      return Error{"bodies " + std::to_string(i) + " and " + std::to_string(j) +
+      return Error{"bodies " + std::to_string(public_of_[i]) + " and " +
+                   std::to_string(public_of_[j]) +
                    " overlap by " + Format(-gap) + " at t = " + Format(now_)};
     }
     return std::nullopt;
@@ -272,7 +281,8 @@ Status World::Impl::Validate() const {
         const WallPlane plane = BoxWall(settings_.container, w);
         const double gap = plane.normal.dot(p) - plane.offset - radius_[i];
         if (gap < -tolerance * radius_[i]) {
-          return Error{"body " + std::to_string(i) + " is " + Format(-gap) + " beyond wall " +
+          return Error{"body " + std::to_string(public_of_[i]) + " is " + Format(-gap) +
+                       " beyond wall " +
                        std::to_string(w) + " at t = " + Format(now_)};
         }
       }
@@ -286,7 +296,8 @@ std::size_t World::Impl::MemoryBytes() const {
                       (radius_.capacity() + inv_mass_.capacity() + restitution_.capacity()) *
                           sizeof(double) +
                       envelope_.capacity() * sizeof(Envelope) +
-                      version_.capacity() * sizeof(std::uint32_t) +
+                      (version_.capacity() + public_of_.capacity() + internal_of_.capacity()) *
+                          sizeof(std::uint32_t) +
                       event_.capacity() * sizeof(Event) + candidate_.capacity() * sizeof(Candidate) +
                       queue_.MemoryBytes() + engagement_queue_.MemoryBytes();
   if (grid_) bytes += grid_->MemoryBytes();
@@ -305,7 +316,7 @@ Result<BodyId> World::AddBody(const BodyDef& def) { return impl_->AddBody(def); 
 Status World::AdvanceTo(double t) { return impl_->AdvanceTo(t); }
 BodyState World::StateAt(BodyId id, double t) const {
   SPARSEDYN_ASSERT(IsValid(id), "StateAt: invalid BodyId");
-  return impl_->StateAt(id.index, t);
+  return impl_->StateAt(impl_->internal_of_[id.index], t);
 }
 double World::Time() const { return impl_->now_; }
 std::size_t World::BodyCount() const { return impl_->paths_.size(); }

@@ -59,9 +59,14 @@ class World::Impl {
     std::uint32_t target_version = 0;
   };
   std::vector<Candidate> candidate_;
+  // Internal indices follow space (Reorder); the public BodyId index is the order of AddBody.
+  std::vector<std::uint32_t> public_of_;    // internal index -> public index
+  std::vector<std::uint32_t> internal_of_;  // public index -> internal index
+  std::uint64_t events_since_reorder_ = 0;
 
   bool started_ = false;
   bool has_envelopes_ = false;
+  bool straight_lines_ = false;  // no envelopes and no acceleration: the fast meeting test
   double max_radius_ = 0.0;
   std::optional<Grid> grid_;
   std::optional<AllPairs> all_pairs_;
@@ -76,6 +81,11 @@ class World::Impl {
   std::optional<std::uint32_t> FindOverlap(const Vec3& p, double radius) const;
   Vec3 MinimumImage(Vec3 d) const;
   Vec3 WrapIntoBox(Vec3 p) const;
+
+  // --- memory order (world_reorder.cpp) ---
+  void MaybeReorder();
+  void Reorder();
+  BodyId PublicId(std::uint32_t i) const { return BodyId{public_of_[i], 0}; }
 
   // --- predictions (world_predict.cpp) ---
   Mover MoverOf(std::uint32_t i, double t) const;

@@ -39,7 +39,8 @@ Status World::Impl::AdvanceTo(double t) {
         message << "event loop stalled: " << window_events << " events without time advancing"
                 << " past t = " << top.time << " (inelastic collapse or a stuck configuration; "
                 << "last event " << EventKindName(static_cast<int>(top.kind)) << " of "
-                << (engagement ? "engagement " : "body ") << top.slot << ")";
+                << (engagement ? "engagement " : "body ")
+                << (engagement ? top.slot : public_of_[top.slot]) << ")";
         return Error{message.str()};
       }
       window_events = 0;
@@ -47,6 +48,7 @@ Status World::Impl::AdvanceTo(double t) {
     }
     now_ = top.time;
     Dispatch(top, engagement);
+    MaybeReorder();
   }
   now_ = std::max(now_, t);
   return Status::Ok();
@@ -136,7 +138,7 @@ void World::Impl::SetVelocity(std::uint32_t i, const Vec3& v) {
   Path& path = paths_[i];
   path = Path{path.PositionAt(now_), v, path.a, now_};
   ++version_[i];
-  if (on_segment_) on_segment_(MotionSegment{now_, BodyId{i, 0}, path.p0, v, path.a, version_[i]});
+  if (on_segment_) on_segment_(MotionSegment{now_, PublicId(i), path.p0, v, path.a, version_[i]});
 }
 
 void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, double gap) {
@@ -154,7 +156,7 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
   if (result.guarded) ++stats_.collapse_guarded;
   if (on_collision_) {
     const Vec3 p_i = paths_[i].p0;
-    on_collision_(CollisionEvent{now_, BodyId{i, 0}, BodyId{j, 0}, -1,
+    on_collision_(CollisionEvent{now_, PublicId(i), PublicId(j), -1,
                                  p_i + radius_[i] * normal, normal, result.impulse});
   }
   // j's own prediction is superseded: the actor-absent event of §4.2, removed in place.
@@ -193,7 +195,7 @@ void World::Impl::HandleWallMeet(std::uint32_t i) {
   ++stats_.wall_collisions;
   if (result.guarded) ++stats_.collapse_guarded;
   if (on_collision_) {
-    on_collision_(CollisionEvent{now_, BodyId{i, 0}, BodyId{}, event.aux,
+    on_collision_(CollisionEvent{now_, PublicId(i), BodyId{}, event.aux,
                                  p - radius_[i] * plane.normal, -plane.normal, result.impulse});
   }
   PredictFull(i);

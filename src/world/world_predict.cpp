@@ -34,8 +34,18 @@ void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& 
   // Predict from the later of the two segment starts, not from `now`: the result then depends
   // only on the two paths, so a prediction kept across cell crossings, or made by another broad
   // phase at another time, is bit-identical (determinism across broad phases).
-  const double reference = std::max(paths_[i].t0, paths_[j].t0);
-  const double dt = PredictMeeting(MoverOf(i, reference), MoverOf(j, reference), shift);
+  const Path& pi = paths_[i];
+  const Path& pj = paths_[j];
+  const double reference = std::max(pi.t0, pj.t0);
+  double dt = kInfinity;
+  if (straight_lines_) {
+    // The hot path: no acceleration, no envelope (same numbers as MoverOf + PredictMeeting).
+    const Vec3 pa = pi.t0 == reference ? pi.p0 : Vec3(pi.p0 + (reference - pi.t0) * pi.v0);
+    const Vec3 pb = pj.t0 == reference ? pj.p0 : Vec3(pj.p0 + (reference - pj.t0) * pj.v0);
+    dt = PredictLinearMeeting(pa, pi.v0, pb, pj.v0, shift, radius_[i] + radius_[j]);
+  } else {
+    dt = PredictMeeting(MoverOf(i, reference), MoverOf(j, reference), shift);
+  }
   if (dt == kInfinity) return;
   const double t = std::max(now_, EventTime(reference, dt));
   // Ties go to the lower target index so that both broad phases choose the same event.
