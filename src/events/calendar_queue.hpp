@@ -53,6 +53,12 @@ class CalendarQueue {
     return slot < entries_.size() && entries_[slot].where != kAbsent;
   }
 
+  /// The time of `slot`'s entry (which must exist).
+  double TimeOf(std::uint32_t slot) const {
+    SPARSEDYN_ASSERT(Contains(slot), "TimeOf() a slot without entry");
+    return entries_[slot].time;
+  }
+
   /// The earliest entry by (time, kind, slot). The queue must not be empty.
   QueueTop Top() const {
     SPARSEDYN_ASSERT(!near_.empty(), "Top() of an empty queue");

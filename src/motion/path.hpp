@@ -24,4 +24,12 @@ struct Path {
   Path RebasedAt(double t) const { return Path{PositionAt(t), VelocityAt(t), a, t}; }
 };
 
+/// The per-body part of a Path when the acceleration is shared (gravity alone) or kept
+/// elsewhere: 56 bytes instead of 80, which is most of a sphere's memory in a large World.
+struct PathStart {
+  Vec3 p0 = Vec3::Zero();
+  Vec3 v0 = Vec3::Zero();
+  double t0 = 0.0;
+};
+
 }  // namespace sparsedyn

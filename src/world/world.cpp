@@ -69,6 +69,7 @@ const char* EventKindName(int k) { return kEventKindNames.at(static_cast<std::si
 
 World::Impl::Impl(const WorldSettings& settings)
     : settings_(settings),
+      uniform_acceleration_(settings.gravity),
       overlap_index_(settings.container.lo,
                      settings.container.kind == Container::Kind::kPeriodicBox
                          ? Vec3(settings.container.hi - settings.container.lo)
@@ -106,14 +107,14 @@ std::optional<std::uint32_t> World::Impl::FindOverlap(const Vec3& p, double radi
     return found;
   }
   // Bodies added while running (rare) are compared with every body at the current time.
-  for (std::uint32_t j = 0; j < paths_.size(); ++j) {
-    if (overlaps(paths_[j].PositionAt(now_), radius_[j])) return public_of_[j];
+  for (std::uint32_t j = 0; j < starts_.size(); ++j) {
+    if (overlaps(PathOf(j).PositionAt(now_), Radius(j))) return public_of_[j];
   }
   return std::nullopt;
 }
 
 Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
-  const std::size_t index = paths_.size();
+  const std::size_t index = starts_.size();
   if (std::optional<Error> error = CheckDefinition(def, index)) return *error;
   const std::string body = "body " + std::to_string(index) + ": ";
 
@@ -147,11 +148,19 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   }
 
   // Accepted: from here on nothing can fail.
-  paths_.push_back(Path{def.position, def.velocity, settings_.gravity + def.thrust, now_});
+  starts_.push_back(PathStart{def.position, def.velocity, now_});
+  const Vec3 acceleration = settings_.gravity + def.thrust;
+  if (!own_accelerations_ && acceleration != uniform_acceleration_) {
+    own_accelerations_ = true;  // the first body with a thrust of its own
+    acceleration_.assign(index, uniform_acceleration_);
+  }
+  if (own_accelerations_) acceleration_.push_back(acceleration);
   if (!started_) overlap_index_.Add(def.position, def.radius);
-  radius_.push_back(def.radius);
-  inv_mass_.push_back(1.0 / def.mass);
-  restitution_.push_back(def.restitution);
+  const std::array<double, 3> material{def.radius, 1.0 / def.mass, def.restitution};
+  const auto [found, added] = material_index_.try_emplace(
+      material, static_cast<std::uint32_t>(materials_.size()));
+  if (added) materials_.push_back(Material{material[0], material[1], material[2]});
+  material_.push_back(found->second);
   if (!def.envelope.IsZero() && !has_envelopes_) {
     has_envelopes_ = true;
     envelope_.resize(index);
@@ -181,7 +190,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
 void World::Impl::Start() {
   started_ = true;
   overlap_index_.Clear();
-  const auto n = static_cast<std::uint32_t>(paths_.size());
+  const auto n = static_cast<std::uint32_t>(starts_.size());
   const Container& box = settings_.container;
   grid_.reset();
   all_pairs_.reset();
@@ -189,12 +198,12 @@ void World::Impl::Start() {
 
   // Rebase every path at the current time so that cells and predictions start from now.
   for (std::uint32_t i = 0; i < n; ++i) {
-    paths_[i] = paths_[i].RebasedAt(now_);
-    paths_[i].p0 = WrapIntoBox(paths_[i].p0);
+    const Path path = PathOf(i).RebasedAt(now_);
+    starts_[i] = PathStart{WrapIntoBox(path.p0), path.v0, path.t0};
   }
 
   straight_lines_ = !has_envelopes_;
-  for (std::uint32_t i = 0; i < n && straight_lines_; ++i) straight_lines_ = paths_[i].a.isZero(0.0);
+  straight_lines_ = straight_lines_ && !own_accelerations_ && uniform_acceleration_.isZero(0.0);
 
   // The grid needs a box and bounded element radii (an envelope grows without bound).
   const bool boxed = box.kind != Container::Kind::kOpen;
@@ -218,8 +227,8 @@ void World::Impl::Start() {
     all_pairs_.emplace(config, n);
   }
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (grid_) grid_->Insert(i, paths_[i].p0);
-    if (all_pairs_) all_pairs_->Insert(i, paths_[i].p0);
+    if (grid_) grid_->Insert(i, starts_[i].p0);
+    if (all_pairs_) all_pairs_->Insert(i, starts_[i].p0);
   }
   if (grid_) Reorder();  // start in spatial order
   events_since_reorder_ = 0;
@@ -227,16 +236,16 @@ void World::Impl::Start() {
 }
 
 BodyState World::Impl::StateAt(std::uint32_t i, double t) const {
-  const Path& path = paths_[i];
-  return BodyState{WrapIntoBox(path.PositionAt(t)), path.VelocityAt(t), path.a, radius_[i],
-                   1.0 / inv_mass_[i], version_[i]};
+  const Path& path = PathOf(i);
+  return BodyState{WrapIntoBox(path.PositionAt(t)), path.VelocityAt(t), path.a, Radius(i),
+                   1.0 / InvMass(i), version_[i]};
 }
 
 double World::Impl::KineticEnergy() const {
   // Summed in public order: the result does not depend on the memory order (Reorder).
   double energy = 0;
   for (const std::uint32_t i : internal_of_) {
-    energy += 0.5 / inv_mass_[i] * paths_[i].VelocityAt(now_).squaredNorm();
+    energy += 0.5 / InvMass(i) * PathOf(i).VelocityAt(now_).squaredNorm();
   }
   return energy;
 }
@@ -244,17 +253,17 @@ double World::Impl::KineticEnergy() const {
 Vec3 World::Impl::Momentum() const {
   Vec3 momentum = Vec3::Zero();
   for (const std::uint32_t i : internal_of_) {
-    momentum += paths_[i].VelocityAt(now_) / inv_mass_[i];
+    momentum += PathOf(i).VelocityAt(now_) / InvMass(i);
   }
   return momentum;
 }
 
 Status World::Impl::Validate() const {
-  const auto n = static_cast<std::uint32_t>(paths_.size());
+  const auto n = static_cast<std::uint32_t>(starts_.size());
   const double tolerance = settings_.contact_tolerance;
   auto check_pair = [&](std::uint32_t i, std::uint32_t j) -> std::optional<Error> {
-    const Vec3 d = MinimumImage(paths_[j].PositionAt(now_) - paths_[i].PositionAt(now_));
-    const double reach = radius_[i] + radius_[j];
+    const Vec3 d = MinimumImage(PathOf(j).PositionAt(now_) - PathOf(i).PositionAt(now_));
+    const double reach = Radius(i) + Radius(j);
     const double gap = d.norm() - reach;
     if (gap < -tolerance * reach) {
       return Error{"bodies " + std::to_string(public_of_[i]) + " and " +
@@ -276,11 +285,11 @@ Status World::Impl::Validate() const {
       }
     }
     if (settings_.container.kind == Container::Kind::kWalledBox) {
-      const Vec3 p = paths_[i].PositionAt(now_);
+      const Vec3 p = PathOf(i).PositionAt(now_);
       for (int w = 0; w < 6; ++w) {
         const WallPlane plane = BoxWall(settings_.container, w);
-        const double gap = plane.normal.dot(p) - plane.offset - radius_[i];
-        if (gap < -tolerance * radius_[i]) {
+        const double gap = plane.normal.dot(p) - plane.offset - Radius(i);
+        if (gap < -tolerance * Radius(i)) {
           return Error{"body " + std::to_string(public_of_[i]) + " is " + Format(-gap) +
                        " beyond wall " +
                        std::to_string(w) + " at t = " + Format(now_)};
@@ -292,13 +301,16 @@ Status World::Impl::Validate() const {
 }
 
 std::size_t World::Impl::MemoryBytes() const {
-  std::size_t bytes = paths_.capacity() * sizeof(Path) +
-                      (radius_.capacity() + inv_mass_.capacity() + restitution_.capacity()) *
-                          sizeof(double) +
+  // A std::map node holds its value and about four pointers.
+  std::size_t bytes = starts_.capacity() * sizeof(PathStart) +
+                      acceleration_.capacity() * sizeof(Vec3) +
+                      materials_.capacity() * sizeof(Material) +
+                      material_index_.size() * (sizeof(std::array<double, 3>) + 40) +
+                      material_.capacity() * sizeof(std::uint32_t) +
                       envelope_.capacity() * sizeof(Envelope) +
                       (version_.capacity() + public_of_.capacity() + internal_of_.capacity()) *
                           sizeof(std::uint32_t) +
-                      event_.capacity() * sizeof(Event) + candidate_.capacity() * sizeof(Candidate) +
+                      event_.capacity() * sizeof(PendingEvent) + candidate_.capacity() * sizeof(Candidate) +
                       queue_.MemoryBytes() + engagement_queue_.MemoryBytes();
   if (grid_) bytes += grid_->MemoryBytes();
   if (all_pairs_) bytes += all_pairs_->MemoryBytes();
@@ -319,8 +331,8 @@ BodyState World::StateAt(BodyId id, double t) const {
   return impl_->StateAt(impl_->internal_of_[id.index], t);
 }
 double World::Time() const { return impl_->now_; }
-std::size_t World::BodyCount() const { return impl_->paths_.size(); }
-bool World::IsValid(BodyId id) const { return id.index < impl_->paths_.size(); }
+std::size_t World::BodyCount() const { return impl_->starts_.size(); }
+bool World::IsValid(BodyId id) const { return id.index < impl_->starts_.size(); }
 BodyId World::IdOf(std::uint32_t index) const { return BodyId{index, 0}; }
 void World::OnCollision(std::function<void(const CollisionEvent&)> callback) {
   impl_->on_collision_ = std::move(callback);

@@ -3,7 +3,9 @@
 
 #include <chrono>
 #include <cstdint>
+#include <array>
 #include <functional>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -46,13 +48,29 @@ class World::Impl {
   double max_penetration_ = 0.0;
 
   // Per-element state (structure of arrays, indexed by body index).
-  std::vector<Path> paths_;
-  std::vector<double> radius_;
-  std::vector<double> inv_mass_;
-  std::vector<double> restitution_;
+  std::vector<PathStart> starts_;            // the path of body i is PathOf(i)
+  std::vector<Vec3> acceleration_;          // per body once own_accelerations_
+  Vec3 uniform_acceleration_ = Vec3::Zero();  // gravity: every body's, until one has a thrust
+  bool own_accelerations_ = false;
+  struct Material {                         // what bodies share: a gas has one
+    double radius;
+    double inv_mass;
+    double restitution;
+  };
+  std::vector<Material> materials_;
+  std::vector<std::uint32_t> material_;     // per body, into materials_
+  std::map<std::array<double, 3>, std::uint32_t> material_index_;  // (r, 1/m, e) -> material
+
+  Path PathOf(std::uint32_t i) const {
+    const PathStart& s = starts_[i];
+    return Path{s.p0, s.v0, own_accelerations_ ? acceleration_[i] : uniform_acceleration_, s.t0};
+  }
+  double Radius(std::uint32_t i) const { return materials_[material_[i]].radius; }
+  double InvMass(std::uint32_t i) const { return materials_[material_[i]].inv_mass; }
+  double Restitution(std::uint32_t i) const { return materials_[material_[i]].restitution; }
   std::vector<Envelope> envelope_;          // empty unless some body has an envelope
   std::vector<std::uint32_t> version_;      // path changes so far
-  std::vector<Event> event_;                // each element's one outstanding prediction (§4)
+  std::vector<PendingEvent> event_;         // each element's one outstanding prediction (§4)
   struct Candidate {                        // the earliest meeting found by the last prediction
     double time = kInfinity;
     std::uint32_t target = kNoIndex;

@@ -78,28 +78,28 @@ void World::Impl::Dispatch(const QueueTop& top, bool engagement) {
 }
 
 void World::Impl::HandleCellCrossing(std::uint32_t i) {
-  const Event event = event_[i];
+  const PendingEvent event = event_[i];
   const int axis = event.aux / 2;
   const int direction = (event.aux % 2) ? +1 : -1;
   const Vec3 shift = grid_ ? grid_->Move(i, axis, direction)
                            : all_pairs_->Move(i, axis, direction);
-  paths_[i].p0 += shift;  // a periodic wrap: the same motion, seen in the box
+  starts_[i].p0 += shift;  // a periodic wrap: the same motion, seen in the box
   PredictAfterCrossing(i, axis, direction);
 }
 
 bool World::Impl::TouchingAndApproaching(std::uint32_t i, std::uint32_t j, Vec3& normal,
                                          double& gap) const {
-  const Vec3 d = MinimumImage(paths_[j].PositionAt(now_) - paths_[i].PositionAt(now_));
-  const double reach = radius_[i] + radius_[j];
+  const Vec3 d = MinimumImage(PathOf(j).PositionAt(now_) - PathOf(i).PositionAt(now_));
+  const double reach = Radius(i) + Radius(j);
   const double distance = d.norm();
   gap = distance - reach;
   normal = d / distance;
-  const Vec3 dv = paths_[j].VelocityAt(now_) - paths_[i].VelocityAt(now_);
+  const Vec3 dv = PathOf(j).VelocityAt(now_) - PathOf(i).VelocityAt(now_);
   return gap <= settings_.contact_tolerance * reach && d.dot(dv) < 0;
 }
 
 void World::Impl::HandleSphereMeet(std::uint32_t i) {
-  const Event event = event_[i];
+  const PendingEvent event = event_[i];
   const std::uint32_t j = event.target;
   if (version_[j] != event.target_version) {
     // Target-absent (§4.2): the target changed path since; the actor looks again.
@@ -123,7 +123,7 @@ void World::Impl::HandleSphereMeet(std::uint32_t i) {
   double gap = 0;
   if (!TouchingAndApproaching(i, j, normal, gap)) {
     // Predicted early (conservative) or touching while separating: look again from here.
-    if (gap > settings_.contact_tolerance * (radius_[i] + radius_[j])) ++stats_.early_events;
+    if (gap > settings_.contact_tolerance * (Radius(i) + Radius(j))) ++stats_.early_events;
     PredictFull(i);
     return;
   }
@@ -135,10 +135,12 @@ void World::Impl::NotePenetration(double gap) {
 }
 
 void World::Impl::SetVelocity(std::uint32_t i, const Vec3& v) {
-  Path& path = paths_[i];
-  path = Path{path.PositionAt(now_), v, path.a, now_};
+  const Path path = PathOf(i);
+  starts_[i] = PathStart{path.PositionAt(now_), v, now_};
   ++version_[i];
-  if (on_segment_) on_segment_(MotionSegment{now_, PublicId(i), path.p0, v, path.a, version_[i]});
+  if (on_segment_) {
+    on_segment_(MotionSegment{now_, PublicId(i), starts_[i].p0, v, path.a, version_[i]});
+  }
 }
 
 void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, double gap) {
@@ -146,8 +148,8 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
   ImpulseResult result;
   {
     const PhaseTimer timer(settings_.profile_phases, stats_.seconds_response);
-    result = SphereImpulse(paths_[i].VelocityAt(now_), paths_[j].VelocityAt(now_), inv_mass_[i],
-                           inv_mass_[j], normal, restitution_[i] * restitution_[j],
+    result = SphereImpulse(PathOf(i).VelocityAt(now_), PathOf(j).VelocityAt(now_), InvMass(i),
+                           InvMass(j), normal, Restitution(i) * Restitution(j),
                            settings_.elastic_below_speed);
     SetVelocity(i, result.v_a);
     SetVelocity(j, result.v_b);
@@ -155,12 +157,12 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
   ++stats_.collisions;
   if (result.guarded) ++stats_.collapse_guarded;
   if (on_collision_) {
-    const Vec3 p_i = paths_[i].p0;
+    const Vec3 p_i = starts_[i].p0;
     on_collision_(CollisionEvent{now_, PublicId(i), PublicId(j), -1,
-                                 p_i + radius_[i] * normal, normal, result.impulse});
+                                 p_i + Radius(i) * normal, normal, result.impulse});
   }
   // j's own prediction is superseded: the actor-absent event of §4.2, removed in place.
-  const Event& pending = event_[j];
+  const PendingEvent& pending = event_[j];
   if (pending.kind != EventKind::kNone &&
       !(pending.kind == EventKind::kSphereMeet && pending.target == i)) {
     ++stats_.stale_actor_absent;
@@ -172,14 +174,14 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
 }
 
 void World::Impl::HandleWallMeet(std::uint32_t i) {
-  const Event event = event_[i];
+  const PendingEvent event = event_[i];
   const WallPlane plane = BoxWall(settings_.container, event.aux);
-  const Vec3 p = paths_[i].PositionAt(now_);
-  const Vec3 v = paths_[i].VelocityAt(now_);
-  const double gap = plane.normal.dot(p) - plane.offset - radius_[i];
+  const Vec3 p = PathOf(i).PositionAt(now_);
+  const Vec3 v = PathOf(i).VelocityAt(now_);
+  const double gap = plane.normal.dot(p) - plane.offset - Radius(i);
   const double approach = plane.normal.dot(v);
-  if (gap > settings_.contact_tolerance * radius_[i] || approach >= 0) {
-    if (gap > settings_.contact_tolerance * radius_[i]) ++stats_.early_events;
+  if (gap > settings_.contact_tolerance * Radius(i) || approach >= 0) {
+    if (gap > settings_.contact_tolerance * Radius(i)) ++stats_.early_events;
     PredictFull(i);
     return;
   }
@@ -188,7 +190,7 @@ void World::Impl::HandleWallMeet(std::uint32_t i) {
   {
     // A static wall has infinite mass: the body's normal velocity is reversed and scaled by e.
     const PhaseTimer timer(settings_.profile_phases, stats_.seconds_response);
-    result = SphereImpulse(v, Vec3::Zero(), inv_mass_[i], 0.0, -plane.normal, restitution_[i],
+    result = SphereImpulse(v, Vec3::Zero(), InvMass(i), 0.0, -plane.normal, Restitution(i),
                            settings_.elastic_below_speed);
     SetVelocity(i, result.v_a);
   }
@@ -196,7 +198,7 @@ void World::Impl::HandleWallMeet(std::uint32_t i) {
   if (result.guarded) ++stats_.collapse_guarded;
   if (on_collision_) {
     on_collision_(CollisionEvent{now_, PublicId(i), BodyId{}, event.aux,
-                                 p - radius_[i] * plane.normal, -plane.normal, result.impulse});
+                                 p - Radius(i) * plane.normal, -plane.normal, result.impulse});
   }
   PredictFull(i);
   PredictEngagementsOf(i);
@@ -211,7 +213,7 @@ void World::Impl::HandleEngagement(std::uint32_t k) {
       Collide(e.a, e.b, normal, gap);
       return;
     }
-    if (gap > settings_.contact_tolerance * (radius_[e.a] + radius_[e.b])) ++stats_.early_events;
+    if (gap > settings_.contact_tolerance * (Radius(e.a) + Radius(e.b))) ++stats_.early_events;
     PredictEngagement(k);
     return;
   }

@@ -18,12 +18,12 @@ double EventTime(double now, double dt) {
 }  // namespace
 
 Mover World::Impl::MoverOf(std::uint32_t i, double t) const {
-  if (has_envelopes_) return MoverAt(paths_[i], radius_[i], envelope_[i], t);
-  return MoverAt(paths_[i], radius_[i], t);
+  if (has_envelopes_) return MoverAt(PathOf(i), Radius(i), envelope_[i], t);
+  return MoverAt(PathOf(i), Radius(i), t);
 }
 
 Mover World::Impl::BodyMoverOf(std::uint32_t i, double t) const {
-  return MoverAt(paths_[i], radius_[i], t);
+  return MoverAt(PathOf(i), Radius(i), t);
 }
 
 void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift,
@@ -34,15 +34,15 @@ void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& 
   // Predict from the later of the two segment starts, not from `now`: the result then depends
   // only on the two paths, so a prediction kept across cell crossings, or made by another broad
   // phase at another time, is bit-identical (determinism across broad phases).
-  const Path& pi = paths_[i];
-  const Path& pj = paths_[j];
+  const PathStart& pi = starts_[i];
+  const PathStart& pj = starts_[j];
   const double reference = std::max(pi.t0, pj.t0);
   double dt = kInfinity;
   if (straight_lines_) {
     // The hot path: no acceleration, no envelope (same numbers as MoverOf + PredictMeeting).
     const Vec3 pa = pi.t0 == reference ? pi.p0 : Vec3(pi.p0 + (reference - pi.t0) * pi.v0);
     const Vec3 pb = pj.t0 == reference ? pj.p0 : Vec3(pj.p0 + (reference - pj.t0) * pj.v0);
-    dt = PredictLinearMeeting(pa, pi.v0, pb, pj.v0, shift, radius_[i] + radius_[j]);
+    dt = PredictLinearMeeting(pa, pi.v0, pb, pj.v0, shift, Radius(i) + Radius(j));
   } else {
     dt = PredictMeeting(MoverOf(i, reference), MoverOf(j, reference), shift);
   }
@@ -80,7 +80,7 @@ Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
   std::uint8_t wall = 0;
   // Walls are met by the body itself (exact and static: no envelope applies), predicted from the
   // segment start so that the time does not depend on when the prediction is made.
-  const double t0 = paths_[i].t0;
+  const double t0 = starts_[i].t0;
   const Mover m0 = BodyMoverOf(i, t0);
   const double wall_time = std::max(now_, EventTime(t0, PredictWall(m0, wall)));
   if (wall_time < event.time) event = Event{wall_time, EventKind::kWallMeet, wall, kNoIndex, 0};
@@ -101,7 +101,7 @@ Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
 
 void World::Impl::Schedule(std::uint32_t i, const Event& event) {
   const PhaseTimer timer(settings_.profile_phases, stats_.seconds_queue);
-  event_[i] = event;
+  event_[i] = PendingEvent(event);
   if (event.kind == EventKind::kNone) {
     queue_.Erase(i);
   } else {
@@ -163,7 +163,7 @@ void World::Impl::PredictAfterCrossing(std::uint32_t i, int axis, int direction)
 void World::Impl::PredictEngagement(std::uint32_t k) {
   Engagements::Engagement& e = engagements_[k];
   // The periodic image of b nearest to a (zero shift outside periodic boxes).
-  const Vec3 d = paths_[e.b].PositionAt(now_) - paths_[e.a].PositionAt(now_);
+  const Vec3 d = PathOf(e.b).PositionAt(now_) - PathOf(e.a).PositionAt(now_);
   const Vec3 shift = MinimumImage(d) - d;
   // Contact of the bodies themselves (the detailed phase for spheres) or separation of the
   // element spheres, whichever comes first.

@@ -17,7 +17,7 @@ constexpr std::uint64_t kEventsPerElementBetweenReorders = 32;
 template <typename T>
 void PermuteVector(std::vector<T>& values, const std::vector<std::uint32_t>& old_of_new) {
   std::vector<T> permuted;
-  permuted.reserve(values.capacity());
+  permuted.reserve(values.size());  // exact: the run's memory is part of its cost
   for (const std::uint32_t old : old_of_new) permuted.push_back(values[old]);
   values.swap(permuted);
 }
@@ -26,7 +26,7 @@ void PermuteVector(std::vector<T>& values, const std::vector<std::uint32_t>& old
 
 void World::Impl::MaybeReorder() {
   if (!grid_) return;  // AllPairs visits every element anyway; engagements need no grid
-  if (++events_since_reorder_ < kEventsPerElementBetweenReorders * paths_.size()) return;
+  if (++events_since_reorder_ < kEventsPerElementBetweenReorders * starts_.size()) return;
   events_since_reorder_ = 0;
   Reorder();
 }
@@ -34,7 +34,7 @@ void World::Impl::MaybeReorder() {
 void World::Impl::Reorder() {
   SPARSEDYN_ASSERT(grid_ && !has_envelopes_ && engagements_.Active() == 0,
                    "Reorder: only worlds on the grid, without engagements, are renumbered");
-  const auto n = static_cast<std::uint32_t>(paths_.size());
+  const auto n = static_cast<std::uint32_t>(starts_.size());
   std::vector<std::uint64_t> key(n);
   for (std::uint32_t i = 0; i < n; ++i) key[i] = grid_->MortonKey(grid_->CellOf(i));
   std::vector<std::uint32_t> old_of_new(n);
@@ -44,10 +44,14 @@ void World::Impl::Reorder() {
   std::vector<std::uint32_t> new_of_old(n);
   for (std::uint32_t e = 0; e < n; ++e) new_of_old[old_of_new[e]] = e;
 
-  PermuteVector(paths_, old_of_new);
-  PermuteVector(radius_, old_of_new);
-  PermuteVector(inv_mass_, old_of_new);
-  PermuteVector(restitution_, old_of_new);
+  std::vector<double> time(n, kInfinity);  // the queue holds the event times
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (event_[i].kind != EventKind::kNone) time[i] = queue_.TimeOf(i);
+  }
+  PermuteVector(time, old_of_new);
+  PermuteVector(starts_, old_of_new);
+  if (own_accelerations_) PermuteVector(acceleration_, old_of_new);
+  PermuteVector(material_, old_of_new);
   PermuteVector(version_, old_of_new);
   PermuteVector(event_, old_of_new);
   PermuteVector(candidate_, old_of_new);
@@ -62,7 +66,7 @@ void World::Impl::Reorder() {
   // which is itself a deterministic function of the run).
   queue_.Clear();
   for (std::uint32_t e = 0; e < n; ++e) {
-    if (event_[e].kind != EventKind::kNone) queue_.Set(e, event_[e].time, event_[e].kind);
+    if (event_[e].kind != EventKind::kNone) queue_.Set(e, time[e], event_[e].kind);
   }
 }
 
