@@ -77,20 +77,26 @@ Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
   event.target = best.target;
   event.target_version = best.target_version;
 
-  std::uint8_t wall = 0;
-  // Walls are met by the body itself (exact and static: no envelope applies), predicted from the
-  // segment start so that the time does not depend on when the prediction is made.
-  const double t0 = starts_[i].t0;
-  const Mover m0 = BodyMoverOf(i, t0);
-  const double wall_time = std::max(now_, EventTime(t0, PredictWall(m0, wall)));
-  if (wall_time < event.time) event = Event{wall_time, EventKind::kWallMeet, wall, kNoIndex, 0};
-
-  // The crossing, too, from the segment start (a periodic wrap then happens at the same time
-  // whichever broad phase predicts it), but not before now.
+  // Walls and the cell boundary are met by the body itself (exact and static: no envelope
+  // applies), predicted from the segment start so that the time does not depend on when the
+  // prediction is made (a periodic wrap then happens at the same time whichever broad phase
+  // predicts it), but never before now.
+  const PathStart& start = starts_[i];
+  const double t0 = start.t0;
+  const bool walled = settings_.container.kind == Container::Kind::kWalledBox;
   int axis = 0, direction = 1;
-  const double crossing_dt =
-      grid_ ? grid_->PredictCrossing(m0, grid_->CellOf(i), now_ - t0, axis, direction)
-            : all_pairs_->PredictCrossing(m0, 0, now_ - t0, axis, direction);
+  double crossing_dt = kInfinity;
+  if (straight_lines_ && grid_ && !walled) {
+    crossing_dt = grid_->PredictLinearCrossing(start.p0, start.v0, grid_->CellOf(i), now_ - t0,
+                                               axis, direction);
+  } else {
+    const Mover m0 = BodyMoverOf(i, t0);
+    std::uint8_t wall = 0;
+    const double wall_time = std::max(now_, EventTime(t0, PredictWall(m0, wall)));
+    if (wall_time < event.time) event = Event{wall_time, EventKind::kWallMeet, wall, kNoIndex, 0};
+    crossing_dt = grid_ ? grid_->PredictCrossing(m0, grid_->CellOf(i), now_ - t0, axis, direction)
+                        : all_pairs_->PredictCrossing(m0, 0, now_ - t0, axis, direction);
+  }
   const double crossing_time = std::max(now_, EventTime(t0, crossing_dt));
   if (crossing_time < event.time) {
     event = Event{crossing_time, EventKind::kCellCrossing,
