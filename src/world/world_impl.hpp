@@ -115,6 +115,9 @@ class World::Impl {
   template <typename Broadphase>
   void PredictNewCellsWith(const Broadphase& broadphase, std::uint32_t i, int axis, int direction);
   void ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift, Candidate& best);
+  void Offer(Candidate& best, double t, std::uint32_t j) const;  // keeps the earlier meeting
+  template <typename VisitNeighbors>
+  void ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors&& visit);
   Event FinishPrediction(std::uint32_t i, const Candidate& best);
   double PredictWall(const Mover& mi, std::uint8_t& wall) const;
   void Schedule(std::uint32_t i, const Event& event);

@@ -34,24 +34,37 @@ void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& 
   // Predict from the later of the two segment starts, not from `now`: the result then depends
   // only on the two paths, so a prediction kept across cell crossings, or made by another broad
   // phase at another time, is bit-identical (determinism across broad phases).
-  const PathStart& pi = starts_[i];
-  const PathStart& pj = starts_[j];
-  const double reference = std::max(pi.t0, pj.t0);
-  double dt = kInfinity;
-  if (straight_lines_) {
-    // The hot path: no acceleration, no envelope (same numbers as MoverOf + PredictMeeting).
+  const double reference = std::max(starts_[i].t0, starts_[j].t0);
+  const double dt = PredictMeeting(MoverOf(i, reference), MoverOf(j, reference), shift);
+  if (dt != kInfinity) Offer(best, std::max(now_, EventTime(reference, dt)), j);
+}
+
+void World::Impl::Offer(Candidate& best, double t, std::uint32_t j) const {
+  // Ties go to the lower target index so that both broad phases choose the same event.
+  if (t < best.time || (t == best.time && j < best.target)) best = Candidate{t, j, version_[j]};
+}
+
+template <typename VisitNeighbors>
+void World::Impl::ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors&& visit) {
+  if (!straight_lines_) {
+    visit([&](std::uint32_t j, const Vec3& shift) { ConsiderMeeting(i, j, shift, best); });
+    return;
+  }
+  // The hot path: straight lines, no envelopes, no engagements. The same numbers as
+  // ConsiderMeeting (MoverOf + PredictMeeting), with the actor's data read once.
+  const PathStart pi = starts_[i];
+  const double ri = Radius(i);
+  std::uint64_t tests = 0;
+  visit([&](std::uint32_t j, const Vec3& shift) {
+    ++tests;
+    const PathStart& pj = starts_[j];
+    const double reference = std::max(pi.t0, pj.t0);
     const Vec3 pa = pi.t0 == reference ? pi.p0 : Vec3(pi.p0 + (reference - pi.t0) * pi.v0);
     const Vec3 pb = pj.t0 == reference ? pj.p0 : Vec3(pj.p0 + (reference - pj.t0) * pj.v0);
-    dt = PredictLinearMeeting(pa, pi.v0, pb, pj.v0, shift, Radius(i) + Radius(j));
-  } else {
-    dt = PredictMeeting(MoverOf(i, reference), MoverOf(j, reference), shift);
-  }
-  if (dt == kInfinity) return;
-  const double t = std::max(now_, EventTime(reference, dt));
-  // Ties go to the lower target index so that both broad phases choose the same event.
-  if (t < best.time || (t == best.time && j < best.target)) {
-    best = Candidate{t, j, version_[j]};
-  }
+    const double dt = PredictLinearMeeting(pa, pi.v0, pb, pj.v0, shift, ri + Radius(j));
+    if (dt != kInfinity) Offer(best, std::max(now_, EventTime(reference, dt)), j);
+  });
+  stats_.pair_tests += tests;
 }
 
 double World::Impl::PredictWall(const Mover& mi, std::uint8_t& wall) const {
@@ -121,8 +134,7 @@ void World::Impl::PredictWith(const Broadphase& broadphase, std::uint32_t i) {
   {
     const PhaseTimer timer(settings_.profile_phases, stats_.seconds_sparse);
     Candidate best;
-    broadphase.ForEachNeighbor(
-        i, [&](std::uint32_t j, const Vec3& shift) { ConsiderMeeting(i, j, shift, best); });
+    ScanNeighbors(i, best, [&](auto&& fn) { broadphase.ForEachNeighbor(i, fn); });
     event = FinishPrediction(i, best);
   }
   Schedule(i, event);
@@ -144,9 +156,8 @@ void World::Impl::PredictNewCellsWith(const Broadphase& broadphase, std::uint32_
   {
     const PhaseTimer timer(settings_.profile_phases, stats_.seconds_sparse);
     Candidate best = candidate_[i];
-    broadphase.ForEachNewNeighbor(i, axis, direction, [&](std::uint32_t j, const Vec3& shift) {
-      ConsiderMeeting(i, j, shift, best);
-    });
+    ScanNeighbors(i, best,
+                  [&](auto&& fn) { broadphase.ForEachNewNeighbor(i, axis, direction, fn); });
     event = FinishPrediction(i, best);
   }
   Schedule(i, event);
