@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: MIT
+#include "narrow/feature_distance.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "sparsedyn/assert.hpp"
+
+namespace sparsedyn::narrow {
+namespace {
+
+double ClosestParameterOnSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                 const Eigen::Vector3d& p) {
+  const Eigen::Vector3d ab = b - a;
+  const double length_squared = ab.squaredNorm();
+  if (length_squared == 0.0) return 0.0;
+  return std::clamp((p - a).dot(ab) / length_squared, 0.0, 1.0);
+}
+
+// Below this |sin|^2 of the angle between two segments the 2x2 system is ill-conditioned and the
+// endpoint pairs decide instead (the minimum of parallel segments is attained at an endpoint).
+constexpr double kParallelSine2 = 1e-14;
+
+const FaceAngleTable* FaceTable(const TrackedPolyhedron::Tables* tables, int f) {
+  return tables == nullptr ? nullptr : tables->face(f);
+}
+
+// Endpoints of a vertex (twice the same point) or an edge, in the polyhedron's frame.
+std::array<Eigen::Vector3d, 2> Ends(const ConvexPolyhedron& p, FeatureId feature) {
+  if (feature.type == FeatureType::kVertex) return {p.vertex(feature.index), p.vertex(feature.index)};
+  const Edge& e = p.edge(feature.index);
+  return {p.vertex(e.vertices[0]), p.vertex(e.vertices[1])};
+}
+
+// Keeps the candidate with the smallest squared distance; the first one wins ties.
+struct Best {
+  FeatureClosest value;
+  double distance_squared = std::numeric_limits<double>::infinity();
+  void Offer(const FeatureClosest& candidate) {
+    const double d2 = (candidate.p_b - candidate.p_a).squaredNorm();
+    if (d2 < distance_squared) {
+      distance_squared = d2;
+      value = candidate;
+    }
+  }
+};
+
+}  // namespace
+
+SegmentClosest ClosestSegmentSegment(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                                     const Eigen::Vector3d& q0, const Eigen::Vector3d& q1) {
+  // Ericson, "Real-Time Collision Detection" 5.1.9, with a different parallel case.
+  const Eigen::Vector3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm();
+  SegmentClosest out;
+  if (a == 0.0 || e == 0.0) {
+    if (a != 0.0) out.s = ClosestParameterOnSegment(p0, p1, q0);
+    if (e != 0.0) out.t = ClosestParameterOnSegment(q0, q1, p0);
+  } else {
+    const double b = d1.dot(d2), c = d1.dot(r), f = d2.dot(r);
+    const double denominator = a * e - b * b;
+    if (denominator > kParallelSine2 * a * e) {
+      out.s = std::clamp((b * f - c * e) / denominator, 0.0, 1.0);
+      out.t = (b * out.s + f) / e;
+      if (out.t < 0.0) {
+        out.t = 0.0;
+        out.s = std::clamp(-c / a, 0.0, 1.0);
+      } else if (out.t > 1.0) {
+        out.t = 1.0;
+        out.s = std::clamp((b - c) / a, 0.0, 1.0);
+      }
+    } else {
+      // Parallel: the best of p0, p1 against [q0, q1] and q0, q1 against [p0, p1].
+      double best = std::numeric_limits<double>::infinity();
+      auto offer = [&](double s, double t) {
+        const double d = ((p0 + s * d1) - (q0 + t * d2)).squaredNorm();
+        if (d < best) {
+          best = d;
+          out.s = s;
+          out.t = t;
+        }
+      };
+      offer(0.0, ClosestParameterOnSegment(q0, q1, p0));
+      offer(1.0, ClosestParameterOnSegment(q0, q1, p1));
+      offer(ClosestParameterOnSegment(p0, p1, q0), 0.0);
+      offer(ClosestParameterOnSegment(p0, p1, q1), 1.0);
+    }
+  }
+  out.p = p0 + out.s * d1;
+  out.q = q0 + out.t * d2;
+  return out;
+}
+
+bool IsOverFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable* table,
+                const Eigen::Vector3d& q) {
+  const auto planes = polyhedron.VoronoiPlanes(FeatureId::Face(f));
+  if (table != nullptr) {
+    return planes[static_cast<std::size_t>(table->DecidingPlane(q))].plane.SignedDistance(q) >= 0.0;
+  }
+  for (std::size_t i = 1; i < planes.size(); ++i) {
+    if (planes[i].plane.SignedDistance(q) < 0.0) return false;
+  }
+  return true;
+}
+
+FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f,
+                             const FaceAngleTable* table, const Eigen::Vector3d& q) {
+  const Plane& plane = polyhedron.face(f).plane;
+  if (IsOverFace(polyhedron, f, table, q)) return {q - plane.SignedDistance(q) * plane.normal, -1};
+  // Outside the prism: the closest point is on the boundary; O(n), only while the walk moves.
+  const auto loop = polyhedron.FaceVertices(f);
+  FacePoint best{polyhedron.vertex(loop[0]), 0};
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const Eigen::Vector3d& a = polyhedron.vertex(loop[k]);
+    const Eigen::Vector3d& b = polyhedron.vertex(loop[(k + 1) % loop.size()]);
+    const Eigen::Vector3d point = a + ClosestParameterOnSegment(a, b, q) * (b - a);
+    const double d = (point - q).squaredNorm();
+    if (d < best_distance) {
+      best_distance = d;
+      best = {point, static_cast<int>(k)};
+    }
+  }
+  return best;
+}
+
+SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
+                                      const FaceAngleTable* table, const Eigen::Vector3d& s0,
+                                      const Eigen::Vector3d& s1) {
+  if (s0 == s1) {
+    const FacePoint on_face = ClosestPointOnFace(polyhedron, f, table, s0);
+    return {0.0, s0, on_face.point, on_face.edge_slot};
+  }
+  // A segment that crosses the face plane over the polygon meets it: distance 0.
+  const Plane& plane = polyhedron.face(f).plane;
+  const double d0 = plane.SignedDistance(s0), d1 = plane.SignedDistance(s1);
+  if (((d0 <= 0.0 && d1 >= 0.0) || (d0 >= 0.0 && d1 <= 0.0)) && d0 != d1) {
+    const double s = d0 / (d0 - d1);
+    const Eigen::Vector3d crossing = s0 + s * (s1 - s0);
+    if (IsOverFace(polyhedron, f, table, crossing)) return {s, crossing, crossing, -1};
+  }
+  // Otherwise an endpoint against the polygon, or the segment against a boundary edge.
+  SegmentFaceClosest best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  auto offer = [&](const SegmentFaceClosest& candidate) {
+    const double d = (candidate.on_face - candidate.on_segment).squaredNorm();
+    if (d < best_distance) {
+      best_distance = d;
+      best = candidate;
+    }
+  };
+  const FacePoint at0 = ClosestPointOnFace(polyhedron, f, table, s0);
+  offer({0.0, s0, at0.point, at0.edge_slot});
+  const FacePoint at1 = ClosestPointOnFace(polyhedron, f, table, s1);
+  offer({1.0, s1, at1.point, at1.edge_slot});
+  const auto loop = polyhedron.FaceVertices(f);
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const SegmentClosest c = ClosestSegmentSegment(s0, s1, polyhedron.vertex(loop[k]),
+                                                   polyhedron.vertex(loop[(k + 1) % loop.size()]));
+    offer({c.s, c.p, c.q, static_cast<int>(k)});
+  }
+  return best;
+}
+
+FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
+                                       const TrackedPolyhedron::Tables* tables_a, FeatureId fa,
+                                       const ConvexPolyhedron& b,
+                                       const TrackedPolyhedron::Tables* tables_b, FeatureId fb,
+                                       const PairFrame& frame) {
+  const bool face_a = fa.type == FeatureType::kFace, face_b = fb.type == FeatureType::kFace;
+  FeatureClosest out;
+  if (!face_a && !face_b) {
+    // Points and segments: in A's frame.
+    const auto ea = Ends(a, fa), eb = Ends(b, fb);
+    const SegmentClosest c =
+        ClosestSegmentSegment(ea[0], ea[1], frame.ToA(eb[0]), frame.ToA(eb[1]));
+    out.p_a = c.p;
+    out.p_b = c.q;
+  } else if (!face_a) {
+    // A's vertex or edge against B's face: in B's frame, so the face is used as stored.
+    const auto ea = Ends(a, fa);
+    const SegmentFaceClosest c = ClosestSegmentFace(b, fb.index, FaceTable(tables_b, fb.index),
+                                                    frame.ToB(ea[0]), frame.ToB(ea[1]));
+    out.p_a = ea[0] + c.s * (ea[1] - ea[0]);
+    out.p_b = frame.ToA(c.on_face);
+    out.slot_b = c.edge_slot;
+  } else if (!face_b) {
+    const auto eb = Ends(b, fb);
+    const Eigen::Vector3d b0 = frame.ToA(eb[0]), b1 = frame.ToA(eb[1]);
+    const SegmentFaceClosest c =
+        ClosestSegmentFace(a, fa.index, FaceTable(tables_a, fa.index), b0, b1);
+    out.p_a = c.on_face;
+    out.p_b = c.on_segment;
+    out.slot_a = c.edge_slot;
+  } else {
+    // Face against face: the closest pair has a point on the boundary of one of them (or they
+    // meet, and then a boundary edge of one crosses the other).
+    Best best;
+    const auto loop_a = a.FaceVertices(fa.index);
+    for (std::size_t k = 0; k < loop_a.size(); ++k) {
+      const Eigen::Vector3d& a0 = a.vertex(loop_a[k]);
+      const Eigen::Vector3d& a1 = a.vertex(loop_a[(k + 1) % loop_a.size()]);
+      const SegmentFaceClosest c = ClosestSegmentFace(b, fb.index, FaceTable(tables_b, fb.index),
+                                                      frame.ToB(a0), frame.ToB(a1));
+      best.Offer({a0 + c.s * (a1 - a0), frame.ToA(c.on_face), 0.0, static_cast<int>(k),
+                  c.edge_slot});
+    }
+    const auto loop_b = b.FaceVertices(fb.index);
+    for (std::size_t k = 0; k < loop_b.size(); ++k) {
+      const Eigen::Vector3d b0 = frame.ToA(b.vertex(loop_b[k]));
+      const Eigen::Vector3d b1 = frame.ToA(b.vertex(loop_b[(k + 1) % loop_b.size()]));
+      const SegmentFaceClosest c =
+          ClosestSegmentFace(a, fa.index, FaceTable(tables_a, fa.index), b0, b1);
+      best.Offer({c.on_face, c.on_segment, 0.0, c.edge_slot, static_cast<int>(k)});
+    }
+    out = best.value;
+  }
+  out.distance = (out.p_b - out.p_a).norm();
+  return out;
+}
+
+}  // namespace sparsedyn::narrow

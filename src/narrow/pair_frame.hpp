@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "sparsedyn/narrow/closest_features.hpp"
+
+namespace sparsedyn::narrow {
+
+/// The pose X_AB of B in A's frame, computed once per query so that every step of the walk works
+/// in A's local coordinates: the translations are subtracted before rotating, so two bodies far
+/// from the origin (1e6) keep the precision of their small relative offset.
+struct PairFrame {
+  Eigen::Matrix3d R_AB = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d p_AB = Eigen::Vector3d::Zero();
+
+  PairFrame() = default;
+  PairFrame(const Pose& X_WA, const Pose& X_WB) {
+    const Eigen::Matrix3d R_WA = X_WA.rotation.normalized().toRotationMatrix();
+    const Eigen::Matrix3d R_WB = X_WB.rotation.normalized().toRotationMatrix();
+    R_AB = R_WA.transpose() * R_WB;
+    p_AB = R_WA.transpose() * (X_WB.translation - X_WA.translation);
+  }
+
+  /// A point of B (body frame) in A's frame.
+  Eigen::Vector3d ToA(const Eigen::Vector3d& p_B) const { return R_AB * p_B + p_AB; }
+  /// A point in A's frame in B's body frame.
+  Eigen::Vector3d ToB(const Eigen::Vector3d& p_A) const {
+    return R_AB.transpose() * (p_A - p_AB);
+  }
+};
+
+}  // namespace sparsedyn::narrow

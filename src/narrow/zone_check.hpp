@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+// Lin-Canny zone (Voronoi region) tests: is the other polyhedron's closest point in the zone of
+// the current feature, and if not, which neighbouring features may the walk step to.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+
+#include "narrow/tables.hpp"
+#include "sparsedyn/geometry/convex_polyhedron.hpp"
+
+namespace sparsedyn::narrow {
+
+/// A step the zone test proposes.
+struct Move {
+  enum class Kind : std::uint8_t {
+    kLower,   // to a boundary feature that holds the current closest point: distance kept
+    kHigher,  // to a feature that contains the current one: distance strictly lowered
+    kBehindFace,  // the point is over the face but behind its plane (V-Clip's local minimum)
+  };
+  FeatureId to;
+  Kind kind = Kind::kLower;
+};
+
+/// At most this many candidate steps per zone test: the most violated planes first.
+inline constexpr int kMaxMoves = 3;
+
+struct Moves {
+  std::array<Move, kMaxMoves> list;
+  int count = 0;
+  void Add(Move move) {
+    if (count < kMaxMoves) list[static_cast<std::size_t>(count++)] = move;
+  }
+};
+
+/// The steps out of feature `f` of `polyhedron` for the other feature's closest point q (in the
+/// polyhedron's frame); `own_slot` is the face edge slot of this feature's closest point (see
+/// FacePoint). Empty when q is in the closed zone. Tie rule: a point on a zone plane
+/// (SignedDistance == 0) is inside. `tables` may be nullptr.
+Moves ZoneMoves(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
+                FeatureId f, const Eigen::Vector3d& q, int own_slot);
+
+}  // namespace sparsedyn::narrow

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+// The closest-feature walk: exact small cases, penetration, frames, tables, the tracker, and a
+// brute-force cross-check on a few thousand random and degenerate pairs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "narrow/angle_tables.hpp"
+#include "narrow/feature_distance.hpp"
+#include "narrow/tables.hpp"
+#include "oracle_check.hpp"
+
+namespace sparsedyn {
+namespace {
+
+using testing::MakeShape;
+using testing::Shape;
+
+Pose At(double x, double y, double z,
+        Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity()) {
+  Pose pose;
+  pose.translation = {x, y, z};
+  pose.rotation = rotation;
+  return pose;
+}
+
+const Shape& Cube() {
+  static const Shape cube = MakeShape("cube", *MakeBox({1, 1, 1}));
+  return cube;
+}
+
+TEST(ClosestFeatures, FacingCubesAreOneApartAlongX) {
+  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked,
+                                                At(3, 0.5, 0.25));
+  EXPECT_EQ(r.status, ClosestFeatures::Status::kSeparated);
+  EXPECT_NEAR(r.distance, 1.0, 1e-15);
+  EXPECT_NEAR(r.normal.x(), 1.0, 1e-15);
+  EXPECT_NEAR(r.point_a.x(), 1.0, 1e-15);
+  EXPECT_NEAR(r.point_b.x(), 2.0, 1e-15);
+}
+
+TEST(ClosestFeatures, CornerToCornerDistanceIsTheDiagonalGap) {
+  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked,
+                                                At(3, 3, 3));
+  EXPECT_NEAR(r.distance, std::sqrt(3.0), 1e-15);
+  EXPECT_EQ(r.features.a, FeatureId::Vertex(Cube().polyhedron->SupportVertex({1, 1, 1})));
+  EXPECT_EQ(r.features.b, FeatureId::Vertex(Cube().polyhedron->SupportVertex({-1, -1, -1})));
+}
+
+TEST(ClosestFeatures, CrossedEdgesMeetAtTheirMidpoints) {
+  // B turned 90 degrees about x and lifted so its lowest edge runs along y above A's top edge.
+  const Eigen::Quaterniond tilt(Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitX()));
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitY()));
+  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0, tilt),
+                                                *Cube().tracked, At(0, 0, 2 * std::sqrt(2.0) + 0.5, turn));
+  EXPECT_EQ(r.features.a.type, FeatureType::kEdge);
+  EXPECT_EQ(r.features.b.type, FeatureType::kEdge);
+  EXPECT_NEAR(r.distance, 0.5, 1e-14);
+}
+
+TEST(ClosestFeatures, OverlappingCubesReportTheirPenetrationDepth) {
+  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked,
+                                                At(1.7, 0.2, -0.1));
+  EXPECT_EQ(r.status, ClosestFeatures::Status::kPenetrating);
+  EXPECT_NEAR(r.distance, -0.3, 1e-14);
+  EXPECT_NEAR(r.normal.x(), 1.0, 1e-14);
+  EXPECT_NEAR(r.normal.dot(r.point_b - r.point_a), r.distance, 1e-14);
+}
+
+TEST(ClosestFeatures, ACubeInsideAnotherIsPenetratingByTheEscapeDistance) {
+  static const Shape small = MakeShape("small cube", *MakeBox({0.1, 0.1, 0.1}));
+  const ClosestFeatures r =
+      FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *small.tracked, At(0.5, 0.0, 0.0));
+  EXPECT_EQ(r.status, ClosestFeatures::Status::kPenetrating);
+  // Pushing B out through x = 1: 1 - (0.5 - 0.1).
+  EXPECT_NEAR(r.distance, -0.6, 1e-14);
+}
+
+TEST(ClosestFeatures, ExactlyTouchingFacesAreAtDistanceZero) {
+  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked,
+                                                At(0, 2, 0.5));
+  EXPECT_EQ(r.status, ClosestFeatures::Status::kPenetrating);
+  EXPECT_EQ(r.distance, 0.0);
+}
+
+TEST(ClosestFeatures, PairsFarFromTheOriginKeepTheirPrecision) {
+  // A 1e-9 gap between cubes 3e6 from the origin: the walk works in A's frame, so it matches the
+  // long double oracle to round-off of the gap's neighbourhood, not of the coordinates (5e-10).
+  const Eigen::Vector3d far(1e6, -2e6, 3e6);
+  const Eigen::Quaterniond q = Eigen::Quaterniond(0.9, 0.1, -0.3, 0.2).normalized();
+  Pose X_WA = At(0, 0, 0, q), X_WB = At(0, 0, 0, q);
+  X_WA.translation = far;
+  X_WB.translation = far + q * Eigen::Vector3d(2.0 + 1e-9, 0.25, 0.0);
+  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, X_WA, *Cube().tracked, X_WB);
+  const double reference = static_cast<double>(
+      testing::ReferenceSignedDistance(*Cube().polyhedron, X_WA, *Cube().polyhedron, X_WB));
+  EXPECT_GT(reference, 0.0);
+  EXPECT_NEAR(r.distance, reference, 1e-15);
+}
+
+TEST(ClosestFeatures, AngleTablesDecideLikeTheirPlanes) {
+  // Every face and vertex table against a scan of the zone planes, on random points.
+  testing::PairGenerator generator(11);
+  int tested = 0;
+  for (const Shape& shape : generator.generic_shapes()) {
+    const ConvexPolyhedron& p = *shape.polyhedron;
+    const TrackedPolyhedron::Tables& tables = shape.tracked->tables();
+    for (int f = 0; f < p.face_count(); ++f) {
+      const narrow::FaceAngleTable* table = tables.face(f);
+      if (table == nullptr) continue;
+      for (int i = 0; i < 200; ++i) {
+        const Eigen::Vector3d q = 2.0 * p.bounding_radius() * generator.RandomUnit() * generator.Uniform();
+        EXPECT_EQ(narrow::IsOverFace(p, f, table, q), narrow::IsOverFace(p, f, nullptr, q));
+        ++tested;
+      }
+    }
+    for (int v = 0; v < p.vertex_count(); ++v) {
+      const narrow::VertexAngleTable* table = tables.vertex(v);
+      if (table == nullptr) continue;
+      const auto planes = p.VoronoiPlanes(FeatureId::Vertex(v));
+      for (int i = 0; i < 200; ++i) {
+        const Eigen::Vector3d q = p.vertex(v) + generator.RandomUnit();
+        bool inside = true;
+        for (const VoronoiPlane& plane : planes) inside = inside && plane.plane.SignedDistance(q) >= 0.0;
+        const std::int32_t deciding = table->DecidingPlane(q - p.vertex(v));
+        const bool table_inside =
+            deciding >= 0 && planes[static_cast<std::size_t>(deciding)].plane.SignedDistance(q) >= 0.0;
+        EXPECT_EQ(table_inside, inside);
+        ++tested;
+      }
+    }
+  }
+  EXPECT_GT(tested, 2000);
+}
+
+TEST(ClosestFeatures, DirectionTableStartsAtTheSupportVertex) {
+  const Shape& shape = Cube();
+  EXPECT_EQ(shape.tracked->StartingFeature({1, 1, 1}),
+            FeatureId::Vertex(shape.polyhedron->SupportVertex({1, 1, 1})));
+  EXPECT_EQ(shape.tracked->StartingFeature({-1, 2, -1}),
+            FeatureId::Vertex(shape.polyhedron->SupportVertex({-1, 2, -1})));
+}
+
+TEST(ClosestFeatureTracker, FollowsARotatingPairWithFewStepsAndNoCapFailures) {
+  testing::PairGenerator generator(5);
+  const Shape big = MakeShape("random hull F=200", *RandomConvexPolyhedron(200, 42));
+  ClosestFeatureTracker tracker(*big.tracked, *big.tracked);
+  const Pose X_WA = At(0, 0, 0);
+  const Eigen::Vector3d axis = Eigen::Vector3d(0.2, 1.0, 0.4).normalized();
+  for (int step = 0; step < 360; ++step) {
+    const Pose X_WB = At(2.5, 0.3, 0.1, Eigen::Quaterniond(Eigen::AngleAxisd(step * M_PI / 180, axis)));
+    const ClosestFeatures& warm = tracker.Update(X_WA, X_WB);
+    const ClosestFeatures cold = FindClosestFeatures(*big.tracked, X_WA, *big.tracked, X_WB);
+    ASSERT_NEAR(warm.distance, cold.distance, 1e-12) << "step " << step;
+  }
+  EXPECT_EQ(tracker.calls(), 360u);
+  EXPECT_EQ(tracker.iteration_cap_failures(), 0u);
+  // Coherence: 1 degree per call needs about one step on average.
+  EXPECT_LT(static_cast<double>(tracker.steps()) / static_cast<double>(tracker.calls()), 3.0);
+}
+
+TEST(ClosestFeatures, IterationCapIsReportedAsAFailureStatus) {
+  ClosestFeaturesOptions options;
+  options.max_steps = 0;
+  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked,
+                                                At(3, 0.5, 0.25), std::nullopt, options);
+  EXPECT_EQ(r.status, ClosestFeatures::Status::kIterationCap);
+}
+
+TEST(ClosestFeatures, AgreesWithBruteForceOnRandomAndDegeneratePairs) {
+  const testing::OracleFigures figures = testing::RunOracleCheck(/*seed=*/20261122, 3000);
+  testing::PrintFigures("fast brute-force check", figures);
+  testing::ExpectFiguresInRange(figures);
+}
+
+}  // namespace
+}  // namespace sparsedyn
