@@ -199,9 +199,9 @@ ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA
   const narrow::PairFrame frame(X_WA, X_WB);
   FeaturePair first;
   if (start) {
-    SPARSEDYN_ASSERT(IsValidFeature(a.polyhedron(), start->a) &&
-                         IsValidFeature(b.polyhedron(), start->b),
-                     "FindClosestFeatures: start pair is not a feature of each polyhedron");
+    SPARSEDYN_ASSERT(
+        IsValidFeature(a.polyhedron(), start->a) && IsValidFeature(b.polyhedron(), start->b),
+        "FindClosestFeatures: start pair is not a feature of each polyhedron");
     first = *start;
   } else {
     first = ColdStart(a, b, frame, options.use_direction_table);
@@ -237,8 +237,8 @@ ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA
   }
   // Contact, containment or a terminal pair within round-off of touching: the separating axis
   // test decides, and gives the depth of a penetration.
-  const narrow::SeparatingAxis axis = narrow::DeepestSeparatingAxis(a.polyhedron(), b.polyhedron(),
-                                                                    frame);
+  const narrow::SeparatingAxis axis =
+      narrow::DeepestSeparatingAxis(a.polyhedron(), b.polyhedron(), frame);
   if (end == WalkEnd::kTerminal && axis.separation > 0.0) {
     out.status = ClosestFeatures::Status::kSeparated;
     out.distance = closest.distance;
@@ -266,8 +266,7 @@ ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA
   return out;
 }
 
-ClosestFeatureTracker::ClosestFeatureTracker(const TrackedPolyhedron& a,
-                                             const TrackedPolyhedron& b,
+ClosestFeatureTracker::ClosestFeatureTracker(const TrackedPolyhedron& a, const TrackedPolyhedron& b,
                                              ClosestFeaturesOptions options)
     : a_(&a), b_(&b), options_(options) {}
 

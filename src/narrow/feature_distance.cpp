@@ -29,7 +29,8 @@ const FaceAngleTable* FaceTable(const TrackedPolyhedron::Tables* tables, int f) 
 
 // Endpoints of a vertex (twice the same point) or an edge, in the polyhedron's frame.
 std::array<Eigen::Vector3d, 2> Ends(const ConvexPolyhedron& p, FeatureId feature) {
-  if (feature.type == FeatureType::kVertex) return {p.vertex(feature.index), p.vertex(feature.index)};
+  if (feature.type == FeatureType::kVertex)
+    return {p.vertex(feature.index), p.vertex(feature.index)};
   const Edge& e = p.edge(feature.index);
   return {p.vertex(e.vertices[0]), p.vertex(e.vertices[1])};
 }
@@ -105,8 +106,8 @@ bool IsOverFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable*
   return true;
 }
 
-FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f,
-                             const FaceAngleTable* table, const Eigen::Vector3d& q) {
+FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable* table,
+                             const Eigen::Vector3d& q) {
   const Plane& plane = polyhedron.face(f).plane;
   if (IsOverFace(polyhedron, f, table, q)) return {q - plane.SignedDistance(q) * plane.normal, -1};
   // Outside the prism: the closest point is on the boundary; O(n), only while the walk moves.
@@ -204,8 +205,8 @@ FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
       const Eigen::Vector3d& a1 = a.vertex(loop_a[(k + 1) % loop_a.size()]);
       const SegmentFaceClosest c = ClosestSegmentFace(b, fb.index, FaceTable(tables_b, fb.index),
                                                       frame.ToB(a0), frame.ToB(a1));
-      best.Offer({a0 + c.s * (a1 - a0), frame.ToA(c.on_face), 0.0, static_cast<int>(k),
-                  c.edge_slot});
+      best.Offer(
+          {a0 + c.s * (a1 - a0), frame.ToA(c.on_face), 0.0, static_cast<int>(k), c.edge_slot});
     }
     const auto loop_b = b.FaceVertices(fb.index);
     for (std::size_t k = 0; k < loop_b.size(); ++k) {

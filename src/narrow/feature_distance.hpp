@@ -34,8 +34,8 @@ struct FacePoint {
   Eigen::Vector3d point;
   int edge_slot = -1;
 };
-FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f,
-                             const FaceAngleTable* table, const Eigen::Vector3d& q);
+FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable* table,
+                             const Eigen::Vector3d& q);
 
 /// Closest points of segment s0 + s (s1 - s0) and face f's polygon (polyhedron frame).
 struct SegmentFaceClosest {

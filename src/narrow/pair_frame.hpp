@@ -26,9 +26,7 @@ struct PairFrame {
   /// A point of B (body frame) in A's frame.
   Eigen::Vector3d ToA(const Eigen::Vector3d& p_B) const { return R_AB * p_B + p_AB; }
   /// A point in A's frame in B's body frame.
-  Eigen::Vector3d ToB(const Eigen::Vector3d& p_A) const {
-    return R_AB.transpose() * (p_A - p_AB);
-  }
+  Eigen::Vector3d ToB(const Eigen::Vector3d& p_A) const { return R_AB.transpose() * (p_A - p_AB); }
 };
 
 }  // namespace sparsedyn::narrow

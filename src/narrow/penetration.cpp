@@ -51,8 +51,8 @@ SeparatingAxis DeepestSeparatingAxis(const ConvexPolyhedron& a, const ConvexPoly
     const std::size_t v = MinAlong(b_in_a, plane.normal);
     const double separation = plane.SignedDistance(b_in_a[v]);
     if (separation > best.separation) {
-      best = {separation, plane.normal, b_in_a[v] - separation * plane.normal, b_in_a[v],
-              FeatureId::Face(f), FeatureId::Vertex(static_cast<std::int32_t>(v))};
+      best = {separation, plane.normal,       b_in_a[v] - separation * plane.normal,
+              b_in_a[v],  FeatureId::Face(f), FeatureId::Vertex(static_cast<std::int32_t>(v))};
     }
   }
   // Face normals of B (the normal from A to B is minus B's outward normal).
@@ -63,8 +63,12 @@ SeparatingAxis DeepestSeparatingAxis(const ConvexPolyhedron& a, const ConvexPoly
     if (separation > best.separation) {
       const Eigen::Vector3d normal_a = frame.R_AB * plane.normal;
       const Eigen::Vector3d& p_a = a.vertex(static_cast<int>(v));
-      best = {separation, -normal_a, p_a, p_a - separation * normal_a,
-              FeatureId::Vertex(static_cast<std::int32_t>(v)), FeatureId::Face(f)};
+      best = {separation,
+              -normal_a,
+              p_a,
+              p_a - separation * normal_a,
+              FeatureId::Vertex(static_cast<std::int32_t>(v)),
+              FeatureId::Face(f)};
     }
   }
   // Edge pairs that form a face of the Minkowski difference.

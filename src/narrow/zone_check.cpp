@@ -72,8 +72,8 @@ Moves EdgeMoves(const ConvexPolyhedron& polyhedron, int e, const Eigen::Vector3d
 
 // Face zone: outside a side plane, step to the boundary edge that holds the face's closest point
 // (a lower step); over the face but behind its plane, report it (the walk resolves it).
-Moves FaceMoves(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
-                int f, const Eigen::Vector3d& q, int own_slot) {
+Moves FaceMoves(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables, int f,
+                const Eigen::Vector3d& q, int own_slot) {
   Moves moves;
   const FaceAngleTable* table = tables == nullptr ? nullptr : tables->face(f);
   if (!IsOverFace(polyhedron, f, table, q)) {

@@ -14,8 +14,8 @@ namespace sparsedyn::narrow {
 /// A step the zone test proposes.
 struct Move {
   enum class Kind : std::uint8_t {
-    kLower,   // to a boundary feature that holds the current closest point: distance kept
-    kHigher,  // to a feature that contains the current one: distance strictly lowered
+    kLower,       // to a boundary feature that holds the current closest point: distance kept
+    kHigher,      // to a feature that contains the current one: distance strictly lowered
     kBehindFace,  // the point is over the face but behind its plane (V-Clip's local minimum)
   };
   FeatureId to;

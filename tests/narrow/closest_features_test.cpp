@@ -30,8 +30,8 @@ const Shape& Cube() {
 }
 
 TEST(ClosestFeatures, FacingCubesAreOneApartAlongX) {
-  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked,
-                                                At(3, 0.5, 0.25));
+  const ClosestFeatures r =
+      FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked, At(3, 0.5, 0.25));
   EXPECT_EQ(r.status, ClosestFeatures::Status::kSeparated);
   EXPECT_NEAR(r.distance, 1.0, 1e-15);
   EXPECT_NEAR(r.normal.x(), 1.0, 1e-15);
@@ -40,8 +40,8 @@ TEST(ClosestFeatures, FacingCubesAreOneApartAlongX) {
 }
 
 TEST(ClosestFeatures, CornerToCornerDistanceIsTheDiagonalGap) {
-  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked,
-                                                At(3, 3, 3));
+  const ClosestFeatures r =
+      FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked, At(3, 3, 3));
   EXPECT_NEAR(r.distance, std::sqrt(3.0), 1e-15);
   EXPECT_EQ(r.features.a, FeatureId::Vertex(Cube().polyhedron->SupportVertex({1, 1, 1})));
   EXPECT_EQ(r.features.b, FeatureId::Vertex(Cube().polyhedron->SupportVertex({-1, -1, -1})));
@@ -51,16 +51,16 @@ TEST(ClosestFeatures, CrossedEdgesMeetAtTheirMidpoints) {
   // B turned 90 degrees about x and lifted so its lowest edge runs along y above A's top edge.
   const Eigen::Quaterniond tilt(Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitX()));
   const Eigen::Quaterniond turn(Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitY()));
-  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0, tilt),
-                                                *Cube().tracked, At(0, 0, 2 * std::sqrt(2.0) + 0.5, turn));
+  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0, tilt), *Cube().tracked,
+                                                At(0, 0, 2 * std::sqrt(2.0) + 0.5, turn));
   EXPECT_EQ(r.features.a.type, FeatureType::kEdge);
   EXPECT_EQ(r.features.b.type, FeatureType::kEdge);
   EXPECT_NEAR(r.distance, 0.5, 1e-14);
 }
 
 TEST(ClosestFeatures, OverlappingCubesReportTheirPenetrationDepth) {
-  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked,
-                                                At(1.7, 0.2, -0.1));
+  const ClosestFeatures r =
+      FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked, At(1.7, 0.2, -0.1));
   EXPECT_EQ(r.status, ClosestFeatures::Status::kPenetrating);
   EXPECT_NEAR(r.distance, -0.3, 1e-14);
   EXPECT_NEAR(r.normal.x(), 1.0, 1e-14);
@@ -77,8 +77,8 @@ TEST(ClosestFeatures, ACubeInsideAnotherIsPenetratingByTheEscapeDistance) {
 }
 
 TEST(ClosestFeatures, ExactlyTouchingFacesAreAtDistanceZero) {
-  const ClosestFeatures r = FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked,
-                                                At(0, 2, 0.5));
+  const ClosestFeatures r =
+      FindClosestFeatures(*Cube().tracked, At(0, 0, 0), *Cube().tracked, At(0, 2, 0.5));
   EXPECT_EQ(r.status, ClosestFeatures::Status::kPenetrating);
   EXPECT_EQ(r.distance, 0.0);
 }
@@ -109,7 +109,8 @@ TEST(ClosestFeatures, AngleTablesDecideLikeTheirPlanes) {
       const narrow::FaceAngleTable* table = tables.face(f);
       if (table == nullptr) continue;
       for (int i = 0; i < 200; ++i) {
-        const Eigen::Vector3d q = 2.0 * p.bounding_radius() * generator.RandomUnit() * generator.Uniform();
+        const Eigen::Vector3d q =
+            2.0 * p.bounding_radius() * generator.RandomUnit() * generator.Uniform();
         EXPECT_EQ(narrow::IsOverFace(p, f, table, q), narrow::IsOverFace(p, f, nullptr, q));
         ++tested;
       }
@@ -121,16 +122,59 @@ TEST(ClosestFeatures, AngleTablesDecideLikeTheirPlanes) {
       for (int i = 0; i < 200; ++i) {
         const Eigen::Vector3d q = p.vertex(v) + generator.RandomUnit();
         bool inside = true;
-        for (const VoronoiPlane& plane : planes) inside = inside && plane.plane.SignedDistance(q) >= 0.0;
+        for (const VoronoiPlane& plane : planes)
+          inside = inside && plane.plane.SignedDistance(q) >= 0.0;
         const std::int32_t deciding = table->DecidingPlane(q - p.vertex(v));
         const bool table_inside =
-            deciding >= 0 && planes[static_cast<std::size_t>(deciding)].plane.SignedDistance(q) >= 0.0;
+            deciding >= 0 &&
+            planes[static_cast<std::size_t>(deciding)].plane.SignedDistance(q) >= 0.0;
         EXPECT_EQ(table_inside, inside);
         ++tested;
       }
     }
   }
   EXPECT_GT(tested, 2000);
+}
+
+TEST(ClosestFeatures, AngleAndDirectionTablesGiveThePlainWalksAnswers) {
+  // Shapes whose faces (prism caps) and vertices (pyramid apex) have many edges, so that the
+  // J.1.1 tables are used, against the plain walk from vertex 0.
+  const Shape shapes[] = {MakeShape("prism 64", *MakePrism(64, 1.0, 0.3)),
+                          MakeShape("pyramid 40", testing::MakePyramid(40, 0.5)),
+                          MakeShape("random hull F=300", *RandomConvexPolyhedron(300, 9))};
+  EXPECT_GT(shapes[0].tracked->tables().face_table_count(), 0);
+  EXPECT_GT(shapes[1].tracked->tables().vertex_table_count(), 0);
+  ClosestFeaturesOptions plain, angles_only;
+  plain.use_angle_tables = plain.use_direction_table = false;
+  angles_only.use_direction_table = false;
+  testing::PairGenerator generator(3);
+  long long table_steps = 0, plain_steps = 0;
+  for (int trial = 0; trial < 900; ++trial) {
+    const Shape& a = shapes[trial % 3];
+    const Shape& b = shapes[(trial / 3) % 3];
+    Pose X_WA, X_WB;
+    X_WA.rotation = generator.RandomRotation();
+    X_WB.rotation = generator.RandomRotation();
+    X_WB.translation = (0.4 + 1.2 * generator.Uniform()) * 2.0 * generator.RandomUnit();
+    SCOPED_TRACE(::testing::Message() << "trial " << trial << " " << a.name << " / " << b.name);
+    const double bound =
+        1e-12 * 2.0 * std::max(a.polyhedron->bounding_radius(), b.polyhedron->bounding_radius());
+    const ClosestFeatures with = FindClosestFeatures(*a.tracked, X_WA, *b.tracked, X_WB);
+    const ClosestFeatures without =
+        FindClosestFeatures(*a.tracked, X_WA, *b.tracked, X_WB, std::nullopt, plain);
+    const ClosestFeatures angles =
+        FindClosestFeatures(*a.tracked, X_WA, *b.tracked, X_WB, std::nullopt, angles_only);
+    EXPECT_NEAR(with.distance, without.distance, bound);
+    EXPECT_NEAR(angles.distance, without.distance, bound);
+    if (std::abs(without.distance) > bound) {
+      EXPECT_EQ(with.status, without.status);
+      EXPECT_EQ(angles.status, without.status);
+    }
+    table_steps += with.steps;
+    plain_steps += without.steps;
+  }
+  // The direction table starts near the answer: fewer steps than starting at vertex 0.
+  EXPECT_LT(table_steps, plain_steps);
 }
 
 TEST(ClosestFeatures, DirectionTableStartsAtTheSupportVertex) {
@@ -148,7 +192,8 @@ TEST(ClosestFeatureTracker, FollowsARotatingPairWithFewStepsAndNoCapFailures) {
   const Pose X_WA = At(0, 0, 0);
   const Eigen::Vector3d axis = Eigen::Vector3d(0.2, 1.0, 0.4).normalized();
   for (int step = 0; step < 360; ++step) {
-    const Pose X_WB = At(2.5, 0.3, 0.1, Eigen::Quaterniond(Eigen::AngleAxisd(step * M_PI / 180, axis)));
+    const Pose X_WB =
+        At(2.5, 0.3, 0.1, Eigen::Quaterniond(Eigen::AngleAxisd(step * M_PI / 180, axis)));
     const ClosestFeatures& warm = tracker.Update(X_WA, X_WB);
     const ClosestFeatures cold = FindClosestFeatures(*big.tracked, X_WA, *big.tracked, X_WB);
     ASSERT_NEAR(warm.distance, cold.distance, 1e-12) << "step " << step;

@@ -31,7 +31,8 @@ struct LongPolyhedron {
 // `poly` placed by (R, t) in long double.
 inline LongPolyhedron Place(const ConvexPolyhedron& poly, const LMat& R, const LVec& t) {
   LongPolyhedron out;
-  for (const Eigen::Vector3d& p : poly.vertices()) out.vertices.push_back(R * p.cast<long double>() + t);
+  for (const Eigen::Vector3d& p : poly.vertices())
+    out.vertices.push_back(R * p.cast<long double>() + t);
   for (int f = 0; f < poly.face_count(); ++f) {
     const auto loop = poly.FaceVertices(f);
     out.loops.emplace_back(loop.begin(), loop.end());
@@ -63,8 +64,9 @@ inline long double SegmentSegmentDistance2(const LVec& p0, const LVec& p1, const
   const LVec d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
   const long double a = d1.squaredNorm(), e = d2.squaredNorm(), b = d1.dot(d2);
   const long double c = d1.dot(r), f = d2.dot(r), denominator = a * e - b * b;
-  long double best = std::min({PointSegmentDistance2(p0, q0, q1), PointSegmentDistance2(p1, q0, q1),
-                               PointSegmentDistance2(q0, p0, p1), PointSegmentDistance2(q1, p0, p1)});
+  long double best =
+      std::min({PointSegmentDistance2(p0, q0, q1), PointSegmentDistance2(p1, q0, q1),
+                PointSegmentDistance2(q0, p0, p1), PointSegmentDistance2(q1, p0, p1)});
   if (denominator > 0) {
     const long double s = (b * f - c * e) / denominator, t = (a * f - b * c) / denominator;
     if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {
@@ -94,18 +96,19 @@ inline long double PointFaceDistance2(const LVec& p, const LongPolyhedron& poly,
 inline long double BoundaryDistance(const LongPolyhedron& a, const LongPolyhedron& b) {
   long double best = std::numeric_limits<long double>::infinity();
   for (const LVec& p : a.vertices) {
-    for (std::size_t f = 0; f < b.loops.size(); ++f) best = std::min(best, PointFaceDistance2(p, b, f));
+    for (std::size_t f = 0; f < b.loops.size(); ++f)
+      best = std::min(best, PointFaceDistance2(p, b, f));
   }
   for (const LVec& p : b.vertices) {
-    for (std::size_t f = 0; f < a.loops.size(); ++f) best = std::min(best, PointFaceDistance2(p, a, f));
+    for (std::size_t f = 0; f < a.loops.size(); ++f)
+      best = std::min(best, PointFaceDistance2(p, a, f));
   }
   for (const auto& ea : a.edges) {
     for (const auto& eb : b.edges) {
-      best = std::min(best, SegmentSegmentDistance2(
-                                a.vertices[static_cast<std::size_t>(ea[0])],
-                                a.vertices[static_cast<std::size_t>(ea[1])],
-                                b.vertices[static_cast<std::size_t>(eb[0])],
-                                b.vertices[static_cast<std::size_t>(eb[1])]));
+      best = std::min(best, SegmentSegmentDistance2(a.vertices[static_cast<std::size_t>(ea[0])],
+                                                    a.vertices[static_cast<std::size_t>(ea[1])],
+                                                    b.vertices[static_cast<std::size_t>(eb[0])],
+                                                    b.vertices[static_cast<std::size_t>(eb[1])]));
     }
   }
   return std::sqrt(best);
@@ -127,9 +130,11 @@ inline long double MaxSeparation(const LongPolyhedron& a, const LongPolyhedron& 
   for (const LVec& n : a.normals) best = std::max(best, AxisSeparation(a, b, n));
   for (const LVec& n : b.normals) best = std::max(best, AxisSeparation(a, b, LVec(-n)));
   for (const auto& ea : a.edges) {
-    const LVec da = a.vertices[static_cast<std::size_t>(ea[1])] - a.vertices[static_cast<std::size_t>(ea[0])];
+    const LVec da =
+        a.vertices[static_cast<std::size_t>(ea[1])] - a.vertices[static_cast<std::size_t>(ea[0])];
     for (const auto& eb : b.edges) {
-      const LVec db = b.vertices[static_cast<std::size_t>(eb[1])] - b.vertices[static_cast<std::size_t>(eb[0])];
+      const LVec db =
+          b.vertices[static_cast<std::size_t>(eb[1])] - b.vertices[static_cast<std::size_t>(eb[0])];
       LVec n = da.cross(db);
       if (n.norm() <= 1e-12L * da.norm() * db.norm()) continue;
       n.normalize();
@@ -170,7 +175,8 @@ inline long double ReferenceSignedDistance(const ConvexPolyhedron& a, const Pose
 }
 
 // Largest signed distance of world point p_W from A's face planes: ~0 on A's surface.
-inline double SurfaceOffset(const ConvexPolyhedron& a, const Pose& X_WA, const Eigen::Vector3d& p_W) {
+inline double SurfaceOffset(const ConvexPolyhedron& a, const Pose& X_WA,
+                            const Eigen::Vector3d& p_W) {
   const Eigen::Vector3d p = X_WA.ToBody(p_W);
   double best = -std::numeric_limits<double>::infinity();
   for (const Face& f : a.faces()) best = std::max(best, f.plane.SignedDistance(p));

@@ -32,8 +32,8 @@ inline OracleFigures RunOracleCheck(std::uint64_t seed, int pair_count) {
   plain.use_direction_table = false;
   for (int trial = 0; trial < pair_count; ++trial) {
     const PlacedPair pair = generator.Next();
-    SCOPED_TRACE(::testing::Message() << "seed " << seed << " trial " << trial << ": "
-                                      << pair.Describe());
+    SCOPED_TRACE(::testing::Message()
+                 << "seed " << seed << " trial " << trial << ": " << pair.Describe());
     const TrackedPolyhedron& a = *pair.a->tracked;
     const TrackedPolyhedron& b = *pair.b->tracked;
     const double bound = kRelativeErrorBound * pair.Diameter();
@@ -59,15 +59,18 @@ inline OracleFigures RunOracleCheck(std::uint64_t seed, int pair_count) {
     EXPECT_NEAR(cold.normal.dot(cold.point_b - cold.point_a), cold.distance, bound);
 
     // The plain walk (no tables, cold start at vertex 0) finds the same distance.
-    const ClosestFeatures walked = FindClosestFeatures(a, pair.X_WA, b, pair.X_WB, std::nullopt, plain);
+    const ClosestFeatures walked =
+        FindClosestFeatures(a, pair.X_WA, b, pair.X_WB, std::nullopt, plain);
     EXPECT_LE(std::abs(walked.distance - cold.distance), bound);
     figures.cap_failures += walked.status == ClosestFeatures::Status::kIterationCap ? 1 : 0;
 
     // Warm start from a random feature pair: same distance, and an equally close feature pair.
     const auto& pa = *pair.a->polyhedron;
     const auto& pb = *pair.b->polyhedron;
-    const FeaturePair start{FeatureId::Face(static_cast<int>(generator.rng()() % static_cast<std::uint64_t>(pa.face_count()))),
-                            FeatureId::Edge(static_cast<int>(generator.rng()() % static_cast<std::uint64_t>(pb.edge_count())))};
+    const FeaturePair start{FeatureId::Face(static_cast<int>(
+                                generator.rng()() % static_cast<std::uint64_t>(pa.face_count()))),
+                            FeatureId::Edge(static_cast<int>(
+                                generator.rng()() % static_cast<std::uint64_t>(pb.edge_count())))};
     const ClosestFeatures warm = FindClosestFeatures(a, pair.X_WA, b, pair.X_WB, start);
     figures.warm_steps += warm.steps;
     figures.cap_failures += warm.status == ClosestFeatures::Status::kIterationCap ? 1 : 0;

@@ -87,8 +87,7 @@ class PairGenerator {
       generic_.push_back(MakeShape(std::string(ToString(solid)), MakeSolid(solid)));
     }
     for (const int sides : {3, 8, 12, 24}) {
-      generic_.push_back(
-          MakeShape("prism " + std::to_string(sides), *MakePrism(sides, 1.0, 0.6)));
+      generic_.push_back(MakeShape("prism " + std::to_string(sides), *MakePrism(sides, 1.0, 0.6)));
     }
     generic_.push_back(MakeShape("pyramid 12", MakePyramid(12, 1.5)));
     generic_.push_back(MakeShape("pyramid 20", MakePyramid(20, 0.7)));
@@ -99,9 +98,10 @@ class PairGenerator {
     thin_.push_back(MakeShape("slab", *MakeSlab(2.0)));
     for (const double scale : {1e-3, 1e3}) {
       for (int i = 0; i < 3; ++i) {
-        scaled_.push_back(MakeShape(
-            "random hull F=" + std::to_string(8 + 10 * i) + " x" + std::to_string(scale),
-            RandomConvexPolyhedron(8 + 10 * i, 300 + static_cast<std::uint64_t>(i))->Scaled(scale)));
+        scaled_.push_back(
+            MakeShape("random hull F=" + std::to_string(8 + 10 * i) + " x" + std::to_string(scale),
+                      RandomConvexPolyhedron(8 + 10 * i, 300 + static_cast<std::uint64_t>(i))
+                          ->Scaled(scale)));
       }
     }
   }
@@ -111,17 +111,24 @@ class PairGenerator {
     const int kind = static_cast<int>(rng_() % 20);
     if (kind < 12) return Generic(Pick(generic_), Pick(generic_), "generic");
     switch (kind) {
-      case 12: return ParallelFaces();
-      case 13: return ParallelEdges();
-      case 14: return OnZonePlanes();
-      case 15: return Touching(0.0, "exact touching");
-      case 16: return Touching(1e-12, "1e-12 gap");
-      case 17: return Generic(Pick(thin_), Pick(rng_() % 2 ? thin_ : generic_), "needle/slab", true);
+      case 12:
+        return ParallelFaces();
+      case 13:
+        return ParallelEdges();
+      case 14:
+        return OnZonePlanes();
+      case 15:
+        return Touching(0.0, "exact touching");
+      case 16:
+        return Touching(1e-12, "1e-12 gap");
+      case 17:
+        return Generic(Pick(thin_), Pick(rng_() % 2 ? thin_ : generic_), "needle/slab", true);
       case 18: {
         const std::vector<Shape>& pool = scaled_;
         const std::size_t half = pool.size() / 2;
         const std::size_t offset = rng_() % 2 ? half : 0;
-        return Generic(&pool[offset + rng_() % half], &pool[offset + rng_() % half], "scaled", true);
+        return Generic(&pool[offset + rng_() % half], &pool[offset + rng_() % half], "scaled",
+                       true);
       }
       default: {
         PlacedPair pair = Generic(Pick(generic_), Pick(generic_), "translated by 1e6", true);
@@ -141,7 +148,8 @@ class PairGenerator {
     }
   }
   Eigen::Quaterniond RandomRotation() {
-    Eigen::Quaterniond q(2 * Uniform() - 1, 2 * Uniform() - 1, 2 * Uniform() - 1, 2 * Uniform() - 1);
+    Eigen::Quaterniond q(2 * Uniform() - 1, 2 * Uniform() - 1, 2 * Uniform() - 1,
+                         2 * Uniform() - 1);
     return q.normalized();
   }
   std::mt19937_64& rng() { return rng_; }
@@ -155,11 +163,14 @@ class PairGenerator {
   PlacedPair Generic(const Shape* a, const Shape* b, std::string kind, bool degenerate = false) {
     PlacedPair pair{a, b, {}, {}, std::move(kind), degenerate};
     pair.X_WA.rotation = RandomRotation();
-    pair.X_WA.translation = Eigen::Vector3d(Uniform(), Uniform(), Uniform()) * a->polyhedron->bounding_radius();
+    pair.X_WA.translation =
+        Eigen::Vector3d(Uniform(), Uniform(), Uniform()) * a->polyhedron->bounding_radius();
     pair.X_WB.rotation = RandomRotation();
     const double ratio = 0.35 + 0.9 * Uniform();
-    pair.X_WB.translation = pair.X_WA.translation +
-                            ratio * (a->polyhedron->bounding_radius() + b->polyhedron->bounding_radius()) * RandomUnit();
+    pair.X_WB.translation =
+        pair.X_WA.translation +
+        ratio * (a->polyhedron->bounding_radius() + b->polyhedron->bounding_radius()) *
+            RandomUnit();
     return pair;
   }
 
@@ -169,7 +180,8 @@ class PairGenerator {
     const Shape* a = Pick(boxes_);
     const Shape* b = Pick(boxes_);
     PlacedPair pair{a, b, {}, {}, "parallel faces", true};
-    const Eigen::Quaterniond common = rng_() % 2 ? Eigen::Quaterniond::Identity() : RandomRotation();
+    const Eigen::Quaterniond common =
+        rng_() % 2 ? Eigen::Quaterniond::Identity() : RandomRotation();
     pair.X_WA.rotation = pair.X_WB.rotation = common;
     const double gaps[] = {-0.3, 0.0, 0.2, 0.2};
     const double lateral_x = 0.25 * static_cast<double>(static_cast<int>(rng_() % 13) - 6);
@@ -184,8 +196,10 @@ class PairGenerator {
     const Shape* a = Pick(boxes_);
     const Shape* b = Pick(boxes_);
     PlacedPair pair{a, b, {}, {}, "parallel edges", true};
-    pair.X_WA.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 4 * static_cast<double>(rng_() % 8), Eigen::Vector3d::UnitZ()));
-    pair.X_WB.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 4 * static_cast<double>(rng_() % 8), Eigen::Vector3d::UnitZ()));
+    pair.X_WA.rotation = Eigen::Quaterniond(
+        Eigen::AngleAxisd(M_PI / 4 * static_cast<double>(rng_() % 8), Eigen::Vector3d::UnitZ()));
+    pair.X_WB.rotation = Eigen::Quaterniond(
+        Eigen::AngleAxisd(M_PI / 4 * static_cast<double>(rng_() % 8), Eigen::Vector3d::UnitZ()));
     const double angle = 2 * M_PI * Uniform();
     const double distance = 1.5 + 2.0 * Uniform();
     pair.X_WB.translation = Eigen::Vector3d(distance * std::cos(angle), distance * std::sin(angle),
@@ -199,7 +213,8 @@ class PairGenerator {
     const Shape* b = &boxes_[static_cast<std::size_t>(rng_() % 2)];
     PlacedPair pair{a, b, {}, {}, "vertex on a zone plane", true};
     Eigen::Vector3d offset;
-    for (int i = 0; i < 3; ++i) offset[i] = 0.5 * static_cast<double>(static_cast<int>(rng_() % 11) - 5);
+    for (int i = 0; i < 3; ++i)
+      offset[i] = 0.5 * static_cast<double>(static_cast<int>(rng_() % 11) - 5);
     if (offset.cwiseAbs().maxCoeff() < 2.5) offset[static_cast<int>(rng_() % 3)] = 3.0;
     pair.X_WB.translation = offset;
     return pair;
