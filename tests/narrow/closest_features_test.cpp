@@ -141,7 +141,7 @@ TEST(ClosestFeatures, AngleAndDirectionTablesGiveThePlainWalksAnswers) {
   // J.1.1 tables are used, against the plain walk from vertex 0.
   const Shape shapes[] = {MakeShape("prism 64", *MakePrism(64, 1.0, 0.3)),
                           MakeShape("pyramid 40", testing::MakePyramid(40, 0.5)),
-                          MakeShape("random hull F=300", *RandomConvexPolyhedron(300, 9))};
+                          MakeShape("random hull F=120", *RandomConvexPolyhedron(120, 9))};
   EXPECT_GT(shapes[0].tracked->tables().face_table_count(), 0);
   EXPECT_GT(shapes[1].tracked->tables().vertex_table_count(), 0);
   ClosestFeaturesOptions plain, angles_only;
@@ -149,7 +149,7 @@ TEST(ClosestFeatures, AngleAndDirectionTablesGiveThePlainWalksAnswers) {
   angles_only.use_direction_table = false;
   testing::PairGenerator generator(3);
   long long table_steps = 0, plain_steps = 0;
-  for (int trial = 0; trial < 900; ++trial) {
+  for (int trial = 0; trial < 600; ++trial) {
     const Shape& a = shapes[trial % 3];
     const Shape& b = shapes[(trial / 3) % 3];
     Pose X_WA, X_WB;
