@@ -277,7 +277,10 @@ const ClosestFeatures& ClosestFeatureTracker::Update(const Pose& X_WA, const Pos
   has_last_ = true;
   ++calls_;
   steps_ += static_cast<std::uint64_t>(last_.steps);
-  if (last_.status == ClosestFeatures::Status::kIterationCap) ++cap_failures_;
+  if (last_.status == ClosestFeatures::Status::kIterationCap) {
+    ++cap_failures_;
+    last_failure_ = DescribeQuery(*a_, X_WA, *b_, X_WB, start);
+  }
   return last_;
 }
 

@@ -212,6 +212,19 @@ TEST(ClosestFeatures, IterationCapIsReportedAsAFailureStatus) {
   EXPECT_EQ(r.status, ClosestFeatures::Status::kIterationCap);
 }
 
+TEST(ClosestFeatureTracker, CapFailuresAreCountedAndDescribedForARegressionTest) {
+  ClosestFeaturesOptions options;
+  options.max_steps = 0;
+  ClosestFeatureTracker tracker(*Cube().tracked, *Cube().tracked, options);
+  EXPECT_TRUE(tracker.last_failure().empty());
+  tracker.Update(At(0, 0, 0), At(3, 0.1, 1.0 / 3.0));
+  EXPECT_EQ(tracker.iteration_cap_failures(), 1u);
+  const std::string& text = tracker.last_failure();
+  EXPECT_NE(text.find("0.33333333333333331"), std::string::npos) << text;  // 17 digits
+  EXPECT_NE(text.find("PolygonMesh{.vertices = {{"), std::string::npos) << text;
+  EXPECT_NE(text.find("start = cold"), std::string::npos) << text;
+}
+
 TEST(ClosestFeatures, AgreesWithBruteForceOnRandomAndDegeneratePairs) {
   const testing::OracleFigures figures = testing::RunOracleCheck(/*seed=*/20261122, 3000);
   testing::PrintFigures("fast brute-force check", figures);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "sparsedyn/geometry/convex_polyhedron.hpp"
 
@@ -85,6 +86,12 @@ ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA
                                     std::optional<FeaturePair> start = std::nullopt,
                                     const ClosestFeaturesOptions& options = {});
 
+/// A paste-able description of one query for tests/regression/ (STYLE.md §4): both polyhedra as
+/// PolygonMesh literals and both poses at 17 significant digits, and the start pair ("cold" when
+/// none). Used for a walk that hit the iteration cap.
+std::string DescribeQuery(const TrackedPolyhedron& a, const Pose& X_WA, const TrackedPolyhedron& b,
+                          const Pose& X_WB, std::optional<FeaturePair> start = std::nullopt);
+
 /// Follows one pair over time: each Update warm-starts from the previous answer. Counts calls,
 /// steps and iteration-cap failures (tests assert the last stays 0).
 class ClosestFeatureTracker {
@@ -100,6 +107,8 @@ class ClosestFeatureTracker {
   std::uint64_t calls() const { return calls_; }
   std::uint64_t steps() const { return steps_; }
   std::uint64_t iteration_cap_failures() const { return cap_failures_; }
+  /// DescribeQuery() of the last query that hit the iteration cap; empty if none did.
+  const std::string& last_failure() const { return last_failure_; }
 
  private:
   const TrackedPolyhedron* a_;
@@ -108,6 +117,7 @@ class ClosestFeatureTracker {
   ClosestFeatures last_;
   bool has_last_ = false;
   std::uint64_t calls_ = 0, steps_ = 0, cap_failures_ = 0;
+  std::string last_failure_;
 };
 
 }  // namespace sparsedyn
