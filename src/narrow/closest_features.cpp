@@ -209,7 +209,7 @@ ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA
   Walk walk(a, b, frame, options);
   const WalkEnd end = walk.Run(first);
 
-  const Eigen::Quaterniond R_WA = X_WA.rotation.normalized();
+  const Eigen::Matrix3d& R_WA = frame.R_WA;
   ClosestFeatures out;
   out.steps = walk.steps();
   out.features = walk.pair();
