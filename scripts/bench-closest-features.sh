@@ -131,6 +131,25 @@ awk -F, '
     }
   }' "$csv"
 
+# Growth of every engine's time with the face count: the exponent beta of ns = alpha F^beta
+# (least squares on log ns against log F; sqrt(F) growth is beta = 0.5, a linear scan 1).
+awk -F, '
+  NR > 1 && $1 !~ /cold/ {
+    k = $1 "," $2; if (!(k in n)) { keys[++m] = k }; x = log($3); y = log($4)
+    n[k]++; sx[k] += x; sy[k] += y; sxx[k] += x * x; sxy[k] += x * y; syy[k] += y * y
+  }
+  END {
+    print "\n| engine | deg/step | beta of ns ~ F^beta | R^2 (log-log) |"
+    print "|---|---|---|---|"
+    for (i = 1; i <= m; ++i) {
+      k = keys[i]; split(k, p, ","); c = n[k]
+      b = (c * sxy[k] - sx[k] * sy[k]) / (c * sxx[k] - sx[k] * sx[k]); a = (sy[k] - b * sx[k]) / c
+      tot = syy[k] - sy[k] * sy[k] / c
+      res = syy[k] - 2 * a * sy[k] - 2 * b * sxy[k] + c * a * a + 2 * a * b * sx[k] + b * b * sxx[k]
+      printf "| %s | %s | %.2f | %.3f |\n", p[1], p[2], b, (tot > 0) ? 1 - res / tot : 1
+    }
+  }' "$csv" | { read -r blank; echo "$blank"; read -r head; echo "$head"; read -r rule; echo "$rule"; sort -t'|' -k2,2 -k3,3n; }
+
 # Plot: one log-log panel per angle, every engine's ns/update against faces (one data file per
 # engine and angle, so that gnuplot draws connected lines; an engine with no rows is skipped).
 png="$out/closest_features.png"
