@@ -3,10 +3,9 @@
 // the same precomputed poses: our warm-started ClosestFeatureTracker, FCL 0.7 distance with
 // libccd's GJK (GST_LIBCCD) and with FCL's own GJK (GST_INDEP), and Bullet 3.24's
 // btGjkPairDetector (double precision, collision margins set to 0). Before timing, every engine's
-// distance is compared with ours (FCL+libccd's while ours is pending) at every pose and with a
-// brute-force distance on a sample of poses; the largest disagreements are printed and reported
-// as the counters `max_dev` and `max_dev_brute` (absolute; both polyhedra have bounding radius 1,
-// gaps are about 0.5).
+// distance is compared with ours at every pose and with a brute-force distance on a sample of
+// poses; the largest disagreements are printed and reported as the counters `max_dev` and
+// `max_dev_brute` (absolute; both polyhedra have bounding radius 1, gaps are about 0.5).
 //
 // Each engine is used as its documentation suggests for repeated distance queries of one pair:
 // FCL gets fresh request/result objects per query (its API keeps no state between queries);
@@ -187,13 +186,8 @@ void BM_Peer(benchmark::State& state, const PeerCase* c, const char* name, Args.
 // about 25 ms at 1000 faces).
 constexpr std::size_t kBruteForcePoses = 40;
 
-// The engine every other is compared with at every pose: ours, or FCL+libccd while ours is
-// pending.
-#if SPARSEDYN_BENCH_HAVE_CLOSEST_FEATURES
+// The engine every other is compared with at every pose.
 constexpr const char* kReference = "ours";
-#else
-constexpr const char* kReference = kFclLibccd;
-#endif
 
 // Pose indices for the brute-force check, spread over the loop but not at the same spin angles
 // for every angle per step (a plain stride would give identical poses for 1°, 5° and 25°).
@@ -211,9 +205,7 @@ std::vector<std::size_t> SamplePoses(std::size_t n) {
 void CheckAgreement(PeerCase& c) {
   const scenes::RotatingPair& pair = c.base->pair;
   std::map<std::string, std::vector<double>> distances = PeerDistances(c);
-#if SPARSEDYN_BENCH_HAVE_CLOSEST_FEATURES
   distances["ours"] = OursDistances(*c.base);
-#endif
   const std::vector<double>& reference = distances.at(kReference);
   std::vector<std::pair<std::size_t, double>> brute;
   double min_gap = std::numeric_limits<double>::infinity();
@@ -251,9 +243,7 @@ void RegisterAll(Registry& registry) {
           registry.cases.emplace_back(MakeClosestFeaturesCase(faces, degrees)).get();
       PeerCase* p = registry.peer_cases.emplace_back(MakePeerCase(*c)).get();
       CheckAgreement(*p);
-#if SPARSEDYN_BENCH_HAVE_CLOSEST_FEATURES
       benchmark::RegisterBenchmark(CaseName("ours_warm", *c).c_str(), BM_OursWarm, c);
-#endif
       benchmark::RegisterBenchmark(CaseName(kFclLibccd, *c).c_str(),
                                    BM_Peer<FclEngine, fcl::GJKSolverType>, p, kFclLibccd,
                                    fcl::GST_LIBCCD);
@@ -262,13 +252,11 @@ void RegisterAll(Registry& registry) {
                                    fcl::GST_INDEP);
       benchmark::RegisterBenchmark(CaseName(kBullet, *c).c_str(), BM_Peer<BulletEngine>, p,
                                    kBullet);
-#if SPARSEDYN_BENCH_HAVE_CLOSEST_FEATURES
       if (degrees == kColdStartDegrees) {
         benchmark::RegisterBenchmark(CaseName("ours_cold_table", *c).c_str(), BM_OursCold, c, true);
         benchmark::RegisterBenchmark(CaseName("ours_cold_plain", *c).c_str(), BM_OursCold, c,
                                      false);
       }
-#endif
     }
   }
 }
@@ -279,11 +267,6 @@ void RegisterAll(Registry& registry) {
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-#if !SPARSEDYN_BENCH_HAVE_CLOSEST_FEATURES
-  std::fprintf(stderr,
-               "closest_features_peers_bench: src/narrow/ has no closest-feature walk yet; "
-               "running the peers only\n");
-#endif
   sparsedyn::bench::Registry registry;
   sparsedyn::bench::RegisterAll(registry);
   benchmark::RunSpecifiedBenchmarks();

@@ -16,12 +16,6 @@
 #include "scenes/rotating_pair.hpp"
 #include "sparsedyn/narrow/closest_features.hpp"
 
-// Defined by bench/CMakeLists.txt: 1 once src/narrow/ implements closest_features.hpp. Until
-// then the programs build and run without our column.
-#ifndef SPARSEDYN_BENCH_HAVE_CLOSEST_FEATURES
-#define SPARSEDYN_BENCH_HAVE_CLOSEST_FEATURES 0
-#endif
-
 namespace sparsedyn::bench {
 
 /// Face counts and spin angles of the experiment (thesis §7.3: 1°, 5° and 25° per step).
@@ -30,13 +24,11 @@ inline const std::vector<double> kDegreesPerStep = {1.0, 5.0, 25.0};
 /// Cold starts are timed on the poses of this angle (they do not depend on it).
 inline constexpr double kColdStartDegrees = 5.0;
 
-/// One case: the pose sequence and, once the walk exists, the polyhedra with their tables.
+/// One case: the pose sequence and the polyhedra with the walk's tables.
 struct ClosestFeaturesCase {
   scenes::RotatingPair pair;
-#if SPARSEDYN_BENCH_HAVE_CLOSEST_FEATURES
   std::unique_ptr<TrackedPolyhedron> a;
   std::unique_ptr<TrackedPolyhedron> b;
-#endif
 };
 
 /// Builds the case or exits with the error (a benchmark program has nobody to return it to).
@@ -49,10 +41,8 @@ inline std::unique_ptr<ClosestFeaturesCase> MakeClosestFeaturesCase(int faces, d
   }
   auto c = std::make_unique<ClosestFeaturesCase>();
   c->pair = std::move(*pair);
-#if SPARSEDYN_BENCH_HAVE_CLOSEST_FEATURES
   c->a = std::make_unique<TrackedPolyhedron>(c->pair.a);
   c->b = std::make_unique<TrackedPolyhedron>(c->pair.b);
-#endif
   return c;
 }
 
@@ -72,7 +62,6 @@ inline void SetCaseCounters(benchmark::State& state, const ClosestFeaturesCase& 
   state.counters["deg"] = c.pair.options.degrees_per_step;
 }
 
-#if SPARSEDYN_BENCH_HAVE_CLOSEST_FEATURES
 /// Our warm-started tracking: one ClosestFeatureTracker::Update per iteration along the loop of
 /// poses, after one untimed lap so that every timed update is warm.
 inline void BM_OursWarm(benchmark::State& state, const ClosestFeaturesCase* c) {
@@ -121,6 +110,5 @@ inline std::vector<double> OursDistances(const ClosestFeaturesCase& c) {
     distances.push_back(tracker.Update(X_WA, c.pair.X_WB).distance);
   return distances;
 }
-#endif
 
 }  // namespace sparsedyn::bench
