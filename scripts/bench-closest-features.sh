@@ -5,6 +5,7 @@
 # process; closest_features_bench, ours alone, when the peers are not installed) and writes
 #   docs/figures/closest_features.csv        one row per engine, angle and face count (medians)
 #   docs/figures/closest_features.png        ns/update against faces, one panel per angle
+#   docs/figures/closest_features_sqrt.png   ours: ns and steps per update against sqrt(faces)
 #   docs/figures/closest_features_agreement.txt   the program's stderr: distance agreement checks
 # and prints, as Markdown, the table of ns/update and peer/ours ratios and the fit of our time
 # per update against sqrt(faces) (thesis App. J.2).
@@ -155,7 +156,7 @@ awk -F, '
 png="$out/closest_features.png"
 series=$(mktemp -d)
 trap 'rm -rf "$series" "${json:-}"' EXIT
-awk -F, -v dir="$series" 'NR > 1 { print $3, $4 > (dir "/" $1 "_" $2 ".dat") }' "$csv"
+awk -F, -v dir="$series" 'NR > 1 { print $3, $4, $5 > (dir "/" $1 "_" $2 ".dat") }' "$csv"
 gnuplot 2>/dev/null <<EOF
 set terminal pngcairo size 1500,520 font "Sans,11"
 set output "$png"
@@ -181,3 +182,36 @@ do for [deg in "1 5 25"] {
 unset multiplot
 EOF
 echo "wrote $png" >&2
+
+# Plot: our ns/update and steps/update against sqrt(faces) with the least-squares lines
+# a + b sqrt(F) per angle (thesis App. J.2 predicts a straight line).
+png_sqrt="$out/closest_features_sqrt.png"
+if [[ -s "$series/ours_warm_1.dat" ]]; then
+  gnuplot 2>/dev/null <<EOF
+set terminal pngcairo size 1200,520 font "Sans,11"
+set output "$png_sqrt"
+set fit quiet nolog
+set xrange [0:33]
+set xtics ("8" sqrt(8), "32" sqrt(32), "128" sqrt(128), "256" sqrt(256), "512" sqrt(512), "1000" sqrt(1000))
+set grid xtics ytics lc rgb "#dddddd"
+set key top left box opaque font "Sans,10"
+set xlabel "faces per polyhedron (axis linear in sqrt(faces))"
+set multiplot layout 1,2 title "sparsedyn warm-started closest-feature tracking against sqrt(faces) (thesis App. J.2), lines: least-squares a + b sqrt(F)"
+colors = "#1f77b4 #ff7f0e #d62728"
+array A[3]; array B[3]
+do for [col in "2 3"] {
+  set ylabel (col eq "2") ? "ns per update (median CPU time)" : "walk steps per update"
+  do for [i=1:3] {
+    deg = word("1 5 25", i); a = 1; b = 1
+    fit a + b * x "$series/ours_warm_".deg.".dat" using (sqrt(\$1)):(column(col + 0)) via a, b
+    A[i] = a; B[i] = b
+  }
+  plot [][0:*] for [i=1:3] "$series/ours_warm_".word("1 5 25", i).".dat" using (sqrt(\$1)):(column(col + 0)) \\
+         with points pt 7 ps 1.3 lc rgb word(colors, i) title sprintf("%s° per step", word("1 5 25", i)), \\
+       for [i=1:3] A[i] + B[i] * x with lines lw 2 lc rgb word(colors, i) \\
+         title sprintf("%.3g + %.3g sqrt(F)", A[i], B[i])
+}
+unset multiplot
+EOF
+  echo "wrote $png_sqrt" >&2
+fi
