@@ -71,7 +71,7 @@ fi
 awk -F, '
   NR > 1 { key = $2 "," $3; ns[$1, key] = $4; steps[$1, key] = $5
            if (!($3 in seen)) { seen[$3] = 1; faces[++n] = $3 } }
-  function cell(e, k) { return ((e, k) in ns) ? sprintf("%.0f", ns[e, k]) : "pending" }
+  function cell(e, k) { return ((e, k) in ns) ? sprintf("%.0f", ns[e, k]) : "–" }
   function ratio(e, k) {
     if (!((e, k) in ns) || !(("ours_warm", k) in ns)) return "–"
     return sprintf("%.1f", ns[e, k] / ns["ours_warm", k]) }
@@ -95,7 +95,7 @@ awk -F, '
   $1 == "ours_cold_table" { table[$3] = $4; tsteps[$3] = $5 }
   $1 == "ours_cold_plain" { plain[$3] = $4; psteps[$3] = $5; faces[++n] = $3 }
   END {
-    if (n == 0) { print "\n(cold starts: pending, our walk is not built)"; exit }
+    if (n == 0) { print "\n(no cold-start rows in the CSV)"; exit }
     print "\n| faces | cold, J.1.2 table: ns | steps | cold, from vertex 0: ns | steps | plain/table |"
     print "|---|---|---|---|---|---|"
     for (i = 1; i <= n; ++i) {
@@ -114,7 +114,7 @@ awk -F, '
       sy[d, j] += y; syy[d, j] += y * y; sxy[d, j] += x * y }
   }
   END {
-    if (angles == 0) { print "\n(sqrt(faces) fit: pending, our walk is not built)"; exit }
+    if (angles == 0) { print "\n(no rows of ours in the CSV: no sqrt(faces) fit)"; exit }
     print "\n| deg/step | quantity | a | b | R^2 of a + b sqrt(F) | c of c sqrt(F) | R^2 of c sqrt(F) |"
     print "|---|---|---|---|---|---|---|"
     split("1 5 25", angle, " ")
