@@ -7,7 +7,7 @@
 // poses; the largest disagreements are printed and reported as the counters `max_dev` and
 // `max_dev_brute` (absolute; both polyhedra have bounding radius 1, gaps are about 0.5).
 //
-// Each engine is used as its documentation suggests for repeated distance queries of one pair:
+// Each engine is used in the plain way for repeated distance queries of one pair:
 // FCL gets fresh request/result objects per query (its API keeps no state between queries);
 // Bullet keeps one btGjkPairDetector per pair, which warm-starts from its cached separating
 // axis. Pose conversion to each engine's types is done once, outside the timed loop.
