@@ -2,12 +2,14 @@
 // `sparsedyn`: the command-line tool (DESIGN.md "Command line").
 #include <CLI/CLI.hpp>
 
+#include "apps/cli/export_command.hpp"
 #include "apps/cli/run_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"sparsedyn: event-driven collision detection and rigid-body simulation"};
   app.require_subcommand(1);
   sparsedyn::cli::AddRunCommand(app);
+  sparsedyn::cli::AddExportCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

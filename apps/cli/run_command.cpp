@@ -7,12 +7,12 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "scenes/presets.hpp"
+#include "sparsedyn/io/recording.hpp"
 
 namespace sparsedyn::cli {
 namespace {
@@ -53,10 +53,6 @@ int Run(const RunOptions& options) {
               << options.scene_file << "\n";
     return 2;
   }
-  if (!options.record_file.empty()) {
-    std::cerr << "sparsedyn run: --record is not supported yet (issue #5)\n";
-    return 2;
-  }
   scenes::PresetRequest request;
   request.name = options.preset;
   request.n = options.n;
@@ -77,12 +73,32 @@ int Run(const RunOptions& options) {
   const double energy_initial = world.KineticEnergy();
   const Vec3 momentum_initial = world.Momentum();
 
+  // The recording is opened before the run so that a bad path fails before any work.
+  std::optional<RecordingWriter> recorder;
+  if (!options.record_file.empty()) {
+    auto [header, bodies] = DescribeForRecording(world, preset->name, preset->seed, until);
+    Result<RecordingWriter> writer = RecordingWriter::Open(options.record_file, header, bodies);
+    if (!writer) {
+      std::cerr << "sparsedyn run: --record: " << writer.error().message << "\n";
+      return 2;
+    }
+    recorder.emplace(std::move(*writer));
+    recorder->Attach(world);
+  }
+
   const auto start = std::chrono::steady_clock::now();
   const Status status = AdvanceWithProgress(world, until);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!status) {
     std::cerr << "sparsedyn run: " << status.error().message << "\n";
     return 1;
+  }
+  if (recorder) {
+    if (const Status finished = recorder->Finish(world.Time()); !finished) {
+      std::cerr << "sparsedyn run: --record: " << finished.error().message << "\n";
+      return 1;
+    }
   }
 
   const Statistics& stats = world.Stats();
@@ -118,6 +134,10 @@ int Run(const RunOptions& options) {
       {"bytes_per_body", static_cast<double>(world.MemoryBytes()) /
                              static_cast<double>(std::max<std::size_t>(1, world.BodyCount()))},
   };
+  if (recorder) {
+    out["recording"] = options.record_file;
+    out["recording_bytes"] = recorder->BytesWritten();
+  }
   if (options.json) {
     std::cout << out.dump(2) << "\n";
     return 0;
@@ -134,6 +154,11 @@ int Run(const RunOptions& options) {
               out["bytes_per_body"].get<double>());
   std::printf("  kinetic energy %.17g -> %.17g, deepest overlap %.3g\n", energy_initial,
               world.KineticEnergy(), world.MaxPenetration());
+  if (recorder) {
+    std::printf("  recording %s: %llu bytes (%.1f per collision)\n", options.record_file.c_str(),
+                static_cast<unsigned long long>(recorder->BytesWritten()),
+                static_cast<double>(recorder->BytesWritten()) / std::max(1.0, collisions));
+  }
   return 0;
 }
 
@@ -154,7 +179,8 @@ void AddRunCommand(CLI::App& app) {
   run->add_option("--broadphase", options->broadphase, "allpairs | grid | hextree")
       ->check(CLI::IsMember({"allpairs", "grid", "hextree"}));
   run->add_flag("--json", options->json, "Print one JSON object on stdout");
-  run->add_option("--record", options->record_file, "Write a recording (issue #5)");
+  run->add_option("--record", options->record_file,
+                  "Write a recording of the run (docs/recording-format.md)");
   run->callback([options] { throw CLI::RuntimeError(Run(*options)); });
 }
 
