@@ -201,7 +201,7 @@ int Run(const RunOptions& options) {
   const std::string recording_path = RecordingPath(options);
   std::optional<RecordingWriter> recorder;
   if (!recording_path.empty()) {
-    auto [header, bodies] = DescribeForRecording(world, scene.name, scene.seed, until);
+    auto [header, bodies] = DescribeForRecording(scene, until);
     Result<RecordingWriter> writer = RecordingWriter::Open(recording_path, header, bodies);
     if (!writer) {
       std::cerr << "sparsedyn run: recording: " << writer.error().message << "\n";

@@ -38,7 +38,7 @@ std::string Escaped(std::string_view bytes) {
 class StreamParser {
  public:
   StreamParser(ByteCursor& in, std::string_view name, Recording& out)
-      : in_(in), name_(name), out_(out) {}
+      : in_(in), name_(name), out_(out), has_segment_(out.bodies.size(), false) {}
 
   Status Parse() {
     for (;;) {
@@ -89,10 +89,21 @@ class StreamParser {
   }
 
   Status CheckBody(std::size_t at, std::uint32_t body, const char* field) const {
-    if (body < out_.bodies.size()) return Status::Ok();
-    return Fail(at, "record " + std::to_string(index_) + ": " + field + " = " +
-                        std::to_string(body) + " but there are " +
-                        std::to_string(out_.bodies.size()) + " bodies");
+    if (body >= out_.bodies.size()) {
+      return Fail(at, "record " + std::to_string(index_) + ": " + field + " = " +
+                          std::to_string(body) + " but there are " +
+                          std::to_string(out_.bodies.size()) + " bodies");
+    }
+    return Status::Ok();
+  }
+
+  // The first segment of every body comes before any other record.
+  Status CheckAllStarted(std::size_t at) const {
+    if (bodies_started_ == out_.bodies.size()) return Status::Ok();
+    std::size_t missing = 0;
+    while (has_segment_[missing]) ++missing;
+    return Fail(at, "record " + std::to_string(index_) + ": body " + std::to_string(missing) +
+                        " has no first segment (those come before any other record)");
   }
 
   Status ParseSegment(std::size_t at) {
@@ -119,6 +130,12 @@ class StreamParser {
       s.angular_velocity = in_.Vector();
     }
     if (Status st = CheckBody(at, s.body, "body"); !st) return st;
+    if (!has_segment_[s.body]) {
+      has_segment_[s.body] = true;
+      ++bodies_started_;
+    } else if (Status st = CheckAllStarted(at); !st) {
+      return st;
+    }
     if (Status st = CheckTime(at, s.t0); !st) return st;
     out_.records.emplace_back(s);
     return Status::Ok();
@@ -140,6 +157,7 @@ class StreamParser {
                           std::to_string(flags));
     }
     if (Status st = CheckBody(at, c.a, "a"); !st) return st;
+    if (Status st = CheckAllStarted(at); !st) return st;
     if (c.b_is_wall && c.b > 5) {
       return Fail(at, "record " + std::to_string(index_) + ": wall index " + std::to_string(c.b) +
                           " is not in 0..5");
@@ -156,6 +174,7 @@ class StreamParser {
     if (Status s = Need(at, kEndBytes, "end"); !s) return s;
     out_.end_time = in_.F64();
     if (Status st = CheckTime(at, out_.end_time); !st) return st;
+    if (Status st = CheckAllStarted(at); !st) return st;
     if (in_.Left() != 0) {
       return Fail(in_.Offset(), std::to_string(in_.Left()) + " bytes after the end record");
     }
@@ -167,6 +186,8 @@ class StreamParser {
   Recording& out_;
   std::size_t index_ = 0;
   double last_time_ = -kInfinity;
+  std::vector<bool> has_segment_;  // per body: its first segment has been read
+  std::size_t bodies_started_ = 0;
 };
 
 // Magic, version and header JSON.

@@ -116,6 +116,32 @@ std::pair<RecordingHeader, std::vector<RecordedBody>> DescribeForRecording(const
   return {std::move(header), std::move(bodies)};
 }
 
+std::pair<RecordingHeader, std::vector<RecordedBody>> DescribeForRecording(
+    const SceneDescription& scene, double end_time) {
+  RecordingHeader header;
+  header.scene = scene.name;
+  header.seed = scene.seed;
+  header.bodies = static_cast<std::uint32_t>(scene.bodies.size());
+  header.container = scene.settings.container;
+  header.gravity = scene.settings.gravity;
+  header.start_time = 0.0;
+  header.end_time = end_time;
+  for (const SceneShape& shape : scene.shapes) {
+    if (shape.kind == SceneShape::Kind::kSphere) {
+      header.shapes.push_back({RecordingShape::Kind::kSphere, shape.radius, {}});
+    } else {
+      header.shapes.push_back(
+          {RecordingShape::Kind::kPolyhedron, shape.radius, shape.polyhedron->ToMesh()});
+    }
+  }
+  std::vector<RecordedBody> bodies;
+  bodies.reserve(scene.bodies.size());
+  for (const SceneBody& body : scene.bodies) {
+    bodies.push_back({body.shape, 0, body.mass, scene.shapes[body.shape].radius});
+  }
+  return {std::move(header), std::move(bodies)};
+}
+
 Result<RecordingWriter> RecordingWriter::Open(const std::filesystem::path& path,
                                               const RecordingHeader& header,
                                               const std::vector<RecordedBody>& bodies) {

@@ -193,6 +193,50 @@ void ExpectReplayMatchesWorld(bool periodic) {
 TEST(Recording, ReplayMatchesStateAtInAPeriodicGas) { ExpectReplayMatchesWorld(true); }
 TEST(Recording, ReplayMatchesStateAtInAWalledGasWithGravity) { ExpectReplayMatchesWorld(false); }
 
+TEST(Recording, PolyhedralScenesAreDescribedWithTheirMeshesAndRotatingSegments) {
+  // What issue #4 will write: a scene's polyhedra in the header, rotating segments.
+  Result<SceneDescription> scene = ParseScene(
+      R"({"bodies": [{"shape": {"sphere": {"radius": 0.5}}},)"
+      R"( {"shape": {"generator": "random_convex", "faces": 24, "seed": 5}, "position": [4, 0, 0],)"
+      R"( "density": 3}]})",
+      "poly.json", ".");
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  auto [header, bodies] = DescribeForRecording(*scene, 1.0);
+  const std::filesystem::path path = TempPath("poly.sdrec");
+  Result<RecordingWriter> writer = RecordingWriter::Open(path, header, bodies);
+  ASSERT_TRUE(writer.ok());
+  RecordedSegment spinning{.body = 1,
+                           .position = Vec3(4, 0, 0),
+                           .velocity = Vec3(-1, 0, 0),
+                           .orientation = Eigen::Quaterniond(0.5, 0.5, 0.5, 0.5),
+                           .angular_velocity = Vec3(0, 0, 2)};
+  spinning.has_rotation = true;
+  writer->Write(RecordedSegment{.body = 0});
+  const std::uint64_t before = writer->BytesWritten();
+  writer->Write(spinning);
+  EXPECT_EQ(writer->BytesWritten() - before, 118u);  // docs/recording-format.md
+  ASSERT_TRUE(writer->Finish(1.0));
+
+  Result<Recording> read = ReadRecording(path);
+  std::filesystem::remove(path);
+  ASSERT_TRUE(read.ok()) << read.error().message;
+  ASSERT_EQ(read->header.shapes.size(), 2u);
+  const RecordingShape& shape = read->header.shapes[1];
+  EXPECT_EQ(shape.kind, RecordingShape::Kind::kPolyhedron);
+  const PolygonMesh mesh = scene->shapes[1].polyhedron->ToMesh();
+  EXPECT_EQ(shape.mesh.faces, mesh.faces);
+  ASSERT_EQ(shape.mesh.vertices.size(), mesh.vertices.size());
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    EXPECT_TRUE(SameBits(shape.mesh.vertices[v], mesh.vertices[v]));
+  }
+  EXPECT_EQ(read->bodies[1].mass, scene->bodies[1].mass);
+  EXPECT_EQ(read->bodies[1].bounding_radius, scene->shapes[1].radius);
+  const auto& segment = std::get<RecordedSegment>(read->records[1]);
+  EXPECT_TRUE(segment.has_rotation);
+  EXPECT_EQ(segment.orientation.coeffs(), spinning.orientation.coeffs());
+  EXPECT_EQ(segment.angular_velocity, Vec3(0, 0, 2));
+}
+
 // --- malformed files --------------------------------------------------------------------------
 
 // A small valid recording's bytes (two bodies, one collision).
@@ -281,6 +325,12 @@ TEST(MalformedRecording, DamagedStreamNamesRecordAndByte) {
   bytes[stream + 2] = 5;  // body index of record 0
   EXPECT_EQ(ErrorOf(bytes), "x.sdrec: byte " + std::to_string(stream) +
                                 ": record 0: body = 5 but there are 2 bodies");
+  // The first segment of every body comes before any other record.
+  bytes = good;
+  bytes[stream + 62 + 2] = 0;  // record 1: a second segment of body 0, none yet for body 1
+  EXPECT_EQ(ErrorOf(bytes), "x.sdrec: byte " + std::to_string(stream + 62) +
+                                ": record 1: body 1 has no first segment (those come before "
+                                "any other record)");
   bytes = good + "xyz";
   EXPECT_EQ(ErrorOf(bytes),
             "x.sdrec: byte " + std::to_string(good.size()) + ": 3 bytes after the end record");

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sparsedyn/geometry/polygon_mesh.hpp"
+#include "sparsedyn/io/scene_file.hpp"
 #include "sparsedyn/result.hpp"
 #include "sparsedyn/types.hpp"
 #include "sparsedyn/world.hpp"
@@ -101,12 +102,18 @@ struct Recording {
 };
 
 /// The header and body records that describe `world` as it is now: one sphere shape per
-/// distinct radius, each body's mass and bounding radius.
-/// TODO(#4): polyhedral bodies add their polyhedron to `shapes` here.
+/// distinct radius, each body's mass and bounding radius. For worlds built in code.
 std::pair<RecordingHeader, std::vector<RecordedBody>> DescribeForRecording(const World& world,
                                                                            std::string scene,
                                                                            std::uint64_t seed,
                                                                            double end_time);
+
+/// The header and body records of a scene before it runs (start_time 0): its shapes table as it
+/// is (polyhedra as their meshes in the body frame, centroid at the origin) and every body's
+/// mass and bounding radius. Polyhedral scenes are described already; issue #4 adds their
+/// orientation and angular velocity to the segments (RecordedSegment::has_rotation).
+std::pair<RecordingHeader, std::vector<RecordedBody>> DescribeForRecording(
+    const SceneDescription& scene, double end_time);
 
 /// Writes a recording file as the World runs (docs/recording-format.md). Usage:
 ///   auto writer = RecordingWriter::Open(path, header, bodies);   // header + body records
