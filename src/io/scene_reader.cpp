@@ -2,6 +2,7 @@
 // Scene files (docs/scene-format.md): strict parsing into a SceneDescription.
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "io/json_checker.hpp"
@@ -290,9 +291,22 @@ std::size_t SceneDescription::PolyhedralBodyCount() const {
 
 Result<SceneDescription> ParseScene(std::string_view json_text, std::string_view name,
                                     const std::filesystem::path& base_dir) {
+  // nlohmann keeps the last of repeated keys silently; a strict reader refuses them.
+  std::vector<std::set<std::string>> open_objects;
+  std::string duplicate;
+  const json::parser_callback_t find_duplicates = [&](int, json::parse_event_t event,
+                                                      json& parsed) {
+    if (event == json::parse_event_t::object_start) open_objects.emplace_back();
+    if (event == json::parse_event_t::object_end && !open_objects.empty()) open_objects.pop_back();
+    if (event == json::parse_event_t::key && !open_objects.empty() &&
+        !open_objects.back().insert(parsed.get<std::string>()).second && duplicate.empty()) {
+      duplicate = parsed.get<std::string>();
+    }
+    return true;
+  };
   json root;
   try {
-    root = json::parse(json_text);
+    root = json::parse(json_text, find_duplicates);
   } catch (const json::exception& e) {
     // nlohmann's message starts "[json.exception.parse_error.101] parse error at line ...";
     // a syntax error knows its byte, a number overflow ("1e999") does not.
@@ -306,6 +320,10 @@ Result<SceneDescription> ParseScene(std::string_view json_text, std::string_view
             ? LineColumn(json_text, parse_error->byte == 0 ? 0 : parse_error->byte - 1) + ": "
             : std::string();
     return Error{std::string(name) + ": " + where + "not valid JSON: " + what};
+  }
+  if (!duplicate.empty()) {
+    return Error{std::string(name) + ": duplicate key " + json(duplicate).dump() +
+                 " (a key may appear only once in an object)"};
   }
   return SceneParser(name, base_dir).Parse(root);
 }

@@ -39,6 +39,11 @@ TEST(SceneFileErrors, NotJsonSaysLineAndColumn) {
   EXPECT_EQ(error.rfind("s.json: line 3, column 15: not valid JSON: ", 0), 0u) << error;
 }
 
+TEST(SceneFileErrors, DuplicateKeysAreRefused) {
+  EXPECT_EQ(ErrorOf(OneBody(std::string(kSphere) + R"(, "mass": 1, "mass": 2)")),
+            "s.json: duplicate key \"mass\" (a key may appear only once in an object)");
+}
+
 TEST(SceneFileErrors, TopLevelMustBeAnObject) {
   EXPECT_EQ(ErrorOf("[1, 2]"), "s.json: (top level): must be an object, got array");
 }
