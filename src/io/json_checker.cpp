@@ -31,13 +31,14 @@ void Checker::Fail(const std::string& path, const std::string& what) {
     ++dropped_;
     return;
   }
-  errors_.push_back(name_ + ": " + (path.empty() ? "(top level)" : path) + ": " + what);
+  const std::string prefix = name_.empty() ? std::string() : name_ + ": ";
+  errors_.push_back(prefix + (path.empty() ? "(top level)" : path) + ": " + what);
 }
 
 Error Checker::ToError() const {
   std::string message;
   for (const std::string& e : errors_) message += (message.empty() ? "" : "\n") + e;
-  if (dropped_ > 0) message += "\n" + name_ + ": ... and " + std::to_string(dropped_) + " more";
+  if (dropped_ > 0) message += "\n... and " + std::to_string(dropped_) + " more";
   return Error{message};
 }
 

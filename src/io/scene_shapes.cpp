@@ -253,7 +253,7 @@ std::optional<SceneShape> BuildShape(const json& spec, const std::string& path,
 Result<SceneShape> ParseShapeSpec(std::string_view spec_json, const std::filesystem::path& base_dir,
                                   std::uint64_t default_seed, std::string_view json_path) {
   using nlohmann::json;
-  json_input::Checker checker("shape");
+  json_input::Checker checker("");
   const json value = json::parse(spec_json, nullptr, /*allow_exceptions=*/false);
   if (value.is_discarded()) return Error{std::string(json_path) + ": not valid JSON"};
   const std::string path(json_path);

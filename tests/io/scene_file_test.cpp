@@ -265,6 +265,18 @@ TEST(SceneFile, EveryKeyIsRead) {
   EXPECT_EQ(scene->PolyhedralBodyCount(), 8u);
 }
 
+TEST(SceneFile, ShapeSpecsCanBeBuiltInCode) {
+  Result<SceneShape> shape =
+      ParseShapeSpec(R"({"generator": "icosahedron", "bounding_radius": 2})", kDataDir);
+  ASSERT_TRUE(shape.ok()) << shape.error().message;
+  EXPECT_EQ(shape->kind, SceneShape::Kind::kPolyhedron);
+  EXPECT_DOUBLE_EQ(shape->radius, 2.0);
+  EXPECT_EQ(shape->polyhedron->face_count(), 20);
+  Result<SceneShape> bad = ParseShapeSpec(R"({"sphere": {}})", kDataDir, 1, "shapes[2]");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.error().message, "shapes[2].sphere.radius: is missing");
+}
+
 TEST(SceneFile, BodiesWithTheSameSpecShareOneShape) {
   Result<SceneDescription> scene = ParseScene(
       R"({"bodies": [{"shape": {"generator": "random_convex", "faces": 40}},)"
