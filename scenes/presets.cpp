@@ -19,12 +19,31 @@ Result<Preset> MakeGasPreset(const PresetRequest& request, std::uint32_t n, doub
   options.n = request.n.value_or(n);
   options.packing = request.density.value_or(density);
   options.seed = request.seed.value_or(1);
-  WorldSettings settings;
-  settings.broadphase = request.broadphase.value_or(Broadphase::kGrid);
-  Result<World> world = MakeGas(options, settings);
+  Result<std::vector<BodyDef>> bodies = MakeGasBodies(options);
+  if (!bodies) return bodies.error();
+
+  // The scene lists every body, so that it can be written out and run again bit for bit.
+  SceneDescription scene;
+  scene.name = request.name;
+  scene.seed = options.seed;
+  scene.packing = options.packing;
+  scene.duration = duration;
+  scene.settings.broadphase = request.broadphase.value_or(Broadphase::kGrid);
+  scene.settings.container =
+      Container::PeriodicBox(Vec3::Zero(), Vec3::Constant(GasBoxSide(options)));
+  const std::uint32_t sphere = scene.AddShape(SphereShape(options.radius));
+  scene.bodies.reserve(bodies->size());
+  for (const BodyDef& def : *bodies) {
+    scene.bodies.push_back({.shape = sphere,
+                            .position = def.position,
+                            .velocity = def.velocity,
+                            .mass = def.mass,
+                            .restitution = def.restitution});
+  }
+  Result<World> world = BuildWorld(scene);
   if (!world) return world.error();
-  return Preset{std::move(*world), request.name, options.n, options.packing, options.seed,
-                duration};
+  return Preset{std::move(*world), std::move(scene), request.name, options.n,
+                options.packing,   options.seed,     duration};
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sparsedyn/io/scene_file.hpp"
 #include "sparsedyn/result.hpp"
 #include "sparsedyn/world.hpp"
 
@@ -21,9 +22,11 @@ struct PresetRequest {
   std::optional<Broadphase> broadphase;
 };
 
-/// A ready World and what the preset chose.
+/// A ready World, the fully expanded scene it was built from (what `--write-scene` writes; the
+/// World is BuildWorld(scene)) and what the preset chose.
 struct Preset {
   World world;
+  SceneDescription scene;
   std::string name;
   std::uint32_t n = 0;
   double density = 0;

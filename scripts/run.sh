@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # The main job: installs what is missing, builds the optimized `sparsedyn` tool and runs it.
-# With no arguments it runs the embedded default scene and prints a summary; any arguments are
-# passed to `sparsedyn` (e.g. scripts/run.sh run --preset gas --n 10000 --json).
+# With no arguments it runs the embedded default scene, prints a summary, writes the recording
+# sparsedyn-default.sdrec in the current folder and prints the command that views it; any
+# arguments are passed to `sparsedyn` (e.g. scripts/run.sh run --preset gas --n 10000 --json,
+# scripts/run.sh view sparsedyn-default.sdrec).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/deps.sh"
@@ -12,4 +14,6 @@ cmake --build "$root/build/bench" --target sparsedyn_cli -j"$(nproc)" >/dev/null
 if (($# == 0)); then
   set -- run
 fi
+# The tool's hints ("view it with: ...") then name this script, which is how the user runs it.
+export SPARSEDYN_PROGRAM="$0"
 exec "$root/build/bench/apps/cli/sparsedyn" "$@"

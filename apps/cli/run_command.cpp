@@ -3,33 +3,97 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <numbers>
 #include <optional>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "scenes/presets.hpp"
+#include "sparsedyn/io/recording.hpp"
+#include "sparsedyn/io/scene_file.hpp"
 
 namespace sparsedyn::cli {
 namespace {
 
+// Where `sparsedyn run` with the default scene writes its recording unless told otherwise.
+constexpr const char* kDefaultRecording = "sparsedyn-default.sdrec";
+
 struct RunOptions {
   std::string scene_file;
-  std::string preset = "default";
+  std::optional<std::string> preset;
   std::optional<std::uint32_t> n;
   std::optional<double> density;
   std::optional<std::uint64_t> seed;
   std::optional<double> until;
-  std::string broadphase = "grid";
+  std::optional<std::string> broadphase;
   bool json = false;
   std::string record_file;
+  bool no_record = false;
+  std::string write_scene;
+  std::string program;  // how to invoke this tool again, for the "view it with" hint
+};
+
+// What is about to run: the scene, its World and what the summary reports about it.
+struct Setup {
+  SceneDescription scene;
+  World world;
+  double density = 0;  // packing fraction reported as "density"
 };
 
 nlohmann::json VectorJson(const Vec3& v) { return {v[0], v[1], v[2]}; }
+
+// The packing fraction of a scene that does not state one: body volumes over the box volume.
+double PackingOf(const SceneDescription& scene) {
+  if (scene.packing) return *scene.packing;
+  const Container& box = scene.settings.container;
+  if (box.kind == Container::Kind::kOpen) return 0.0;
+  double volume = 0;
+  for (const SceneBody& body : scene.bodies) volume += scene.shapes[body.shape].Volume();
+  return volume / (box.hi - box.lo).prod();
+}
+
+// The scene file or the preset, and its World; an Error names the bad option or file.
+Result<Setup> MakeSetup(const RunOptions& options) {
+  std::optional<Broadphase> broadphase;
+  if (options.broadphase == "hextree") {
+    return Error{"--broadphase hextree is not available yet"};
+  }
+  if (options.broadphase) {
+    broadphase = *options.broadphase == "allpairs" ? Broadphase::kAllPairs : Broadphase::kGrid;
+  }
+  if (options.scene_file.empty()) {
+    scenes::PresetRequest request;
+    request.name = options.preset.value_or("default");
+    request.n = options.n;
+    request.density = options.density;
+    request.seed = options.seed;
+    request.broadphase = broadphase;
+    Result<scenes::Preset> preset = scenes::MakePreset(request);
+    if (!preset) return preset.error();
+    return Setup{std::move(preset->scene), std::move(preset->world), preset->density};
+  }
+  // A scene file says everything itself; only the broad phase and the duration may be overridden.
+  for (const auto& [given, name] : {std::pair{options.preset.has_value(), "--preset"},
+                                    {options.n.has_value(), "--n"},
+                                    {options.density.has_value(), "--density"},
+                                    {options.seed.has_value(), "--seed"}}) {
+    if (given) return Error{std::string(name) + " applies to presets, not to a scene file"};
+  }
+  Result<SceneDescription> scene = ReadScene(options.scene_file);
+  if (!scene) return scene.error();
+  if (broadphase) scene->settings.broadphase = *broadphase;
+  Result<World> world = BuildWorld(*scene);
+  if (!world) return Error{options.scene_file + ": " + world.error().message};
+  const double density = PackingOf(*scene);
+  return Setup{std::move(*scene), std::move(*world), density};
+}
 
 // Advances in slices so that a terminal can show progress; the slices do not change the result
 // (AdvanceTo(t) processes the same events whatever the intermediate stops).
@@ -47,56 +111,29 @@ Status AdvanceWithProgress(World& world, double until) {
   return Status::Ok();
 }
 
-int Run(const RunOptions& options) {
-  if (!options.scene_file.empty()) {
-    std::cerr << "sparsedyn run: scene files are not supported yet (issue #5): "
-              << options.scene_file << "\n";
-    return 2;
-  }
-  if (!options.record_file.empty()) {
-    std::cerr << "sparsedyn run: --record is not supported yet (issue #5)\n";
-    return 2;
-  }
-  scenes::PresetRequest request;
-  request.name = options.preset;
-  request.n = options.n;
-  request.density = options.density;
-  request.seed = options.seed;
-  request.broadphase = options.broadphase == "allpairs" ? Broadphase::kAllPairs : Broadphase::kGrid;
-  if (options.broadphase == "hextree") {
-    std::cerr << "sparsedyn run: --broadphase hextree is not available yet\n";
-    return 2;
-  }
-  Result<scenes::Preset> preset = scenes::MakePreset(request);
-  if (!preset) {
-    std::cerr << "sparsedyn run: " << preset.error().message << "\n";
-    return 2;
-  }
-  World& world = preset->world;
-  const double until = options.until.value_or(preset->default_duration);
-  const double energy_initial = world.KineticEnergy();
-  const Vec3 momentum_initial = world.Momentum();
+// The recording file to write: --record, or the default file for the default scene.
+std::string RecordingPath(const RunOptions& options) {
+  if (options.no_record) return {};
+  if (!options.record_file.empty()) return options.record_file;
+  const bool default_scene = options.scene_file.empty() && !options.preset;
+  return default_scene ? kDefaultRecording : std::string();
+}
 
-  const auto start = std::chrono::steady_clock::now();
-  const Status status = AdvanceWithProgress(world, until);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!status) {
-    std::cerr << "sparsedyn run: " << status.error().message << "\n";
-    return 1;
-  }
-
+nlohmann::json Summary(const Setup& setup, const std::string& broadphase, double wall,
+                       double energy_initial, const Vec3& momentum_initial) {
+  const World& world = setup.world;
   const Statistics& stats = world.Stats();
   nlohmann::json kinds = nlohmann::json::object();
   for (int k = 0; k < static_cast<int>(stats.events_by_kind.size()); ++k) {
     kinds[EventKindName(k)] = stats.events_by_kind[static_cast<std::size_t>(k)];
   }
   const double collisions = static_cast<double>(stats.collisions + stats.wall_collisions);
-  nlohmann::json out = {
-      {"preset", preset->name},
+  return {
+      {"preset", setup.scene.name},
       {"bodies", world.BodyCount()},
-      {"density", preset->density},
-      {"seed", preset->seed},
-      {"broadphase", options.broadphase},
+      {"density", setup.density},
+      {"seed", setup.scene.seed},
+      {"broadphase", broadphase},
       {"simulated_time", world.Time()},
       {"wall_seconds", wall},
       {"events", stats.events},
@@ -118,43 +155,131 @@ int Run(const RunOptions& options) {
       {"bytes_per_body", static_cast<double>(world.MemoryBytes()) /
                              static_cast<double>(std::max<std::size_t>(1, world.BodyCount()))},
   };
+}
+
+void PrintSummary(const nlohmann::json& out) {
+  const auto number = [&](const char* key) { return out[key].get<double>(); };
+  std::printf("sparsedyn run: scene '%s', %zu bodies, packing %.3g, seed %llu, %s\n",
+              out["preset"].get<std::string>().c_str(), out["bodies"].get<std::size_t>(),
+              number("density"), static_cast<unsigned long long>(out["seed"].get<std::uint64_t>()),
+              out["broadphase"].get<std::string>().c_str());
+  std::printf("  simulated %.6g s in %.3f s wall: %.0f events (%.0f stale), %.0f collisions\n",
+              number("simulated_time"), number("wall_seconds"), number("events"),
+              number("stale_events"), number("collisions"));
+  std::printf("  %.0f collisions/s, %.0f events/s, %.0f bytes per body\n",
+              number("collisions_per_second"), number("events_per_second"),
+              number("bytes_per_body"));
+  std::printf("  kinetic energy %.17g -> %.17g, deepest overlap %.3g\n",
+              number("kinetic_energy_initial"), number("kinetic_energy_final"),
+              number("max_penetration"));
+}
+
+int Run(const RunOptions& options) {
+  Result<Setup> setup = MakeSetup(options);
+  if (!setup) {
+    std::cerr << "sparsedyn run: " << setup.error().message << "\n";
+    return 2;
+  }
+  World& world = setup->world;
+  SceneDescription& scene = setup->scene;
+  const double until = options.until.value_or(scene.duration);
+
+  // --write-scene writes the fully expanded scene (every body) and runs nothing.
+  if (!options.write_scene.empty()) {
+    scene.duration = until;
+    if (const Status written = WriteScene(scene, options.write_scene); !written) {
+      std::cerr << "sparsedyn run: --write-scene: " << written.error().message << "\n";
+      return 1;
+    }
+    std::fprintf(stderr, "sparsedyn run: wrote %s (%zu bodies); run it with: %s run %s\n",
+                 options.write_scene.c_str(), scene.bodies.size(), options.program.c_str(),
+                 options.write_scene.c_str());
+    return 0;
+  }
+
+  // The recording is opened before the run so that a bad path fails before any work.
+  const std::string recording_path = RecordingPath(options);
+  std::optional<RecordingWriter> recorder;
+  if (!recording_path.empty()) {
+    auto [header, bodies] = DescribeForRecording(scene, until);
+    Result<RecordingWriter> writer = RecordingWriter::Open(recording_path, header, bodies);
+    if (!writer) {
+      std::cerr << "sparsedyn run: recording: " << writer.error().message << "\n";
+      return 2;
+    }
+    recorder.emplace(std::move(*writer));
+    recorder->Attach(world);
+  }
+
+  const double energy_initial = world.KineticEnergy();
+  const Vec3 momentum_initial = world.Momentum();
+  const auto start = std::chrono::steady_clock::now();
+  const Status status = AdvanceWithProgress(world, until);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!status) {
+    std::cerr << "sparsedyn run: " << status.error().message << "\n";
+    return 1;
+  }
+  if (recorder) {
+    if (const Status finished = recorder->Finish(world.Time()); !finished) {
+      std::cerr << "sparsedyn run: recording: " << finished.error().message << "\n";
+      return 1;
+    }
+  }
+
+  const std::string broadphase =
+      world.Settings().broadphase == Broadphase::kAllPairs ? "allpairs" : "grid";
+  nlohmann::json out = Summary(*setup, broadphase, wall, energy_initial, momentum_initial);
+  if (recorder) {
+    out["recording"] = recording_path;
+    out["recording_bytes"] = recorder->BytesWritten();
+  }
   if (options.json) {
     std::cout << out.dump(2) << "\n";
     return 0;
   }
-  std::printf("sparsedyn run: preset '%s', %zu bodies, packing %.3g, seed %llu, %s\n",
-              preset->name.c_str(), world.BodyCount(), preset->density,
-              static_cast<unsigned long long>(preset->seed), options.broadphase.c_str());
-  std::printf("  simulated %.6g s in %.3f s wall: %llu events (%llu stale), %.0f collisions\n",
-              world.Time(), wall, static_cast<unsigned long long>(stats.events),
-              static_cast<unsigned long long>(stats.stale_target_absent + stats.stale_actor_absent),
-              collisions);
-  std::printf("  %.0f collisions/s, %.0f events/s, %.0f bytes per body\n",
-              out["collisions_per_second"].get<double>(), out["events_per_second"].get<double>(),
-              out["bytes_per_body"].get<double>());
-  std::printf("  kinetic energy %.17g -> %.17g, deepest overlap %.3g\n", energy_initial,
-              world.KineticEnergy(), world.MaxPenetration());
+  PrintSummary(out);
+  if (recorder) {
+    const double collisions = std::max(1.0, out["collisions"].get<double>());
+    std::printf("  recording %s: %llu bytes (%.0f per collision)\n", recording_path.c_str(),
+                static_cast<unsigned long long>(recorder->BytesWritten()),
+                static_cast<double>(recorder->BytesWritten()) / collisions);
+    std::printf("\nView it with:\n  %s view %s\n", options.program.c_str(), recording_path.c_str());
+  }
   return 0;
 }
 
 }  // namespace
 
-void AddRunCommand(CLI::App& app) {
+void AddRunCommand(CLI::App& app, const std::string& program) {
   auto options = std::make_shared<RunOptions>();
-  CLI::App* run = app.add_subcommand("run", "Simulate a scene event by event and print a summary");
-  run->add_option("scene", options->scene_file, "Scene file (JSON)");
+  options->program = program;
+  CLI::App* run = app.add_subcommand(
+      "run",
+      "Simulate a scene event by event and print a summary. With no scene and no --preset it "
+      "runs the embedded default scene and records it to " +
+          std::string(kDefaultRecording) + " (see --record, --no-record)");
+  run->add_option("scene", options->scene_file, "Scene file (JSON, docs/scene-format.md)");
   run->add_option("--preset", options->preset, "Preset scene")
       ->check(CLI::IsMember(scenes::PresetNames()));
   run->add_option("--n", options->n, "Number of bodies")->check(CLI::Range(1u, 100000000u));
   run->add_option("--density", options->density, "Packing fraction")
       ->check(CLI::Range(1e-9, 0.5235));
   run->add_option("--seed", options->seed, "Random seed");
-  run->add_option("--until", options->until, "Simulated time to reach, s")
+  run->add_option("--until", options->until, "Simulated time to reach, s (default: the scene's)")
       ->check(CLI::Range(0.0, 1e12));
   run->add_option("--broadphase", options->broadphase, "allpairs | grid | hextree")
       ->check(CLI::IsMember({"allpairs", "grid", "hextree"}));
   run->add_flag("--json", options->json, "Print one JSON object on stdout");
-  run->add_option("--record", options->record_file, "Write a recording (issue #5)");
+  run->add_option("--record", options->record_file,
+                  std::string("Write a recording (docs/recording-format.md); the default scene "
+                              "records to ") +
+                      kDefaultRecording + " unless --no-record");
+  run->add_flag("--no-record", options->no_record, "Write no recording");
+  run->add_option("--write-scene", options->write_scene,
+                  "Write the scene with every body listed to this JSON file and exit "
+                  "(`sparsedyn run FILE` then gives the same run)");
   run->callback([options] { throw CLI::RuntimeError(Run(*options)); });
 }
 

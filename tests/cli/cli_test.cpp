@@ -81,7 +81,7 @@ TEST(CliRun, BadOptionsFailWithAMessageNamingThem) {
 }
 
 TEST(CliRun, DefaultSceneRunsAndPrintsASummary) {
-  const Output result = RunCli("run --until 1");
+  const Output result = RunCli("run --until 1 --no-record");
   ASSERT_EQ(result.status, 0);
   EXPECT_NE(result.out.find("collisions"), std::string::npos);
 }

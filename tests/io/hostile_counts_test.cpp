@@ -31,13 +31,27 @@ void* Allocate(std::size_t size) {
 }  // namespace
 
 // Replacements of the global allocation functions (the unaligned ones; the aligned forms keep
-// their default pair). new[] and the nothrow forms forward to these by default.
+// their default pair). The nothrow forms are replaced too: the standard library's defaults
+// forward to operator new, but AddressSanitizer intercepts them separately, and memory it
+// allocates must not reach the free() below (std::stable_sort's buffer in a World uses them).
 void* operator new(std::size_t size) { return Allocate(size); }
 void* operator new[](std::size_t size) { return Allocate(size); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  try {
+    return Allocate(size);
+  } catch (const std::bad_alloc&) {
+    return nullptr;
+  }
+}
+void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept {
+  return operator new(size, tag);
+}
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
 namespace sparsedyn {
 namespace {

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sparsedyn/geometry/convex_polyhedron.hpp"
+#include "sparsedyn/result.hpp"
+#include "sparsedyn/types.hpp"
+#include "sparsedyn/world.hpp"
+
+namespace sparsedyn {
+
+/// A shape of a scene: a sphere or a convex polyhedron, built from the spec the scene gives
+/// (docs/scene-format.md "Shapes"). Immutable once built; bodies refer to it by index.
+struct SceneShape {
+  enum class Kind { kSphere, kPolyhedron };
+  Kind kind = Kind::kSphere;
+  /// Sphere radius, m; for a polyhedron its bounding radius about the centroid.
+  double radius = 0.0;
+  /// The polyhedron in its body frame with the centroid at the origin (null for a sphere).
+  std::shared_ptr<const ConvexPolyhedron> polyhedron;
+  /// The shape's spec as compact JSON, exactly what FormatScene writes back, e.g.
+  /// {"sphere":{"radius":0.5}} or {"generator":"random_convex","faces":60,"seed":3}. Also the
+  /// key that makes bodies with equal specs share one shape.
+  std::string spec;
+
+  /// Volume, m^3 (for density -> mass).
+  double Volume() const;
+};
+
+/// A body of a scene: everything docs/scene-format.md lets a body say, resolved (defaults
+/// applied, density turned into mass). Fields the sphere World does not use yet (orientation,
+/// angular velocity, friction) are kept for the polyhedral World of issue #4.
+struct SceneBody {
+  std::uint32_t shape = 0;       ///< index into SceneDescription::shapes
+  Vec3 position = Vec3::Zero();  ///< centre of mass in the world frame, m
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body to world, unit
+  Vec3 velocity = Vec3::Zero();                                     ///< m/s
+  Vec3 angular_velocity = Vec3::Zero();                             ///< rad/s, world frame
+  Vec3 thrust = Vec3::Zero();     ///< own acceleration added to gravity, m/s^2
+  double mass = 1.0;              ///< kg (from "mass", or "density" x volume)
+  std::optional<double> density;  ///< kg/m^3 when the file gave a density
+  double restitution = 1.0;       ///< in [0, 1]
+  double friction = 0.0;          ///< Coulomb coefficient >= 0 (issue #4)
+};
+
+/// A scene as a file describes it: the World's settings, shapes, bodies and how long to run.
+struct SceneDescription {
+  std::string name;               ///< reported by `sparsedyn run` as "preset"
+  std::uint64_t seed = 1;         ///< default seed of random generators; reported
+  std::optional<double> packing;  ///< informational packing fraction, reported as "density"
+  double duration = 10.0;         ///< simulated seconds `sparsedyn run` advances by default
+  WorldSettings settings;
+  std::vector<SceneShape> shapes;
+  std::vector<SceneBody> bodies;
+
+  /// Adds `shape` unless one with the same spec is there; returns its index.
+  std::uint32_t AddShape(SceneShape shape);
+  /// The number of bodies whose shape is a polyhedron.
+  std::size_t PolyhedralBodyCount() const;
+};
+
+/// A sphere shape of radius `radius` with its spec.
+SceneShape SphereShape(double radius);
+
+/// Builds a shape from its JSON spec (docs/scene-format.md "Shapes"); mesh paths are relative
+/// to `base_dir`, and `default_seed` seeds random generators that give no seed of their own.
+/// Errors name `json_path` (e.g. "bodies[3].shape") and what is wrong.
+Result<SceneShape> ParseShapeSpec(std::string_view spec_json, const std::filesystem::path& base_dir,
+                                  std::uint64_t default_seed = 1,
+                                  std::string_view json_path = "shape");
+
+/// Parses scene JSON strictly: unknown keys, wrong types and out-of-range values are errors.
+/// The Error lists every problem found (one per line, at most 20), each as
+/// "<name>: <json path>: <what>", e.g. "s.json: bodies[3].velocity[1]: must be a number, got
+/// string". Mesh files are read relative to `base_dir`.
+Result<SceneDescription> ParseScene(std::string_view json_text, std::string_view name,
+                                    const std::filesystem::path& base_dir);
+
+/// Reads and parses a scene file (mesh paths relative to the file's folder).
+Result<SceneDescription> ReadScene(const std::filesystem::path& path);
+
+/// The scene as JSON text that ParseScene reads back to the same description: every body
+/// listed with every field, doubles written so that they read back bit for bit.
+std::string FormatScene(const SceneDescription& scene);
+
+/// Writes FormatScene(scene) to `path`.
+Status WriteScene(const SceneDescription& scene, const std::filesystem::path& path);
+
+/// A World holding the scene's bodies, added in order. Nothing is returned half-built: an Error
+/// names the body ("bodies[12]: ...") when the World refuses it (overlap, outside the
+/// container...). Polyhedral bodies are refused: the World simulates spheres only until
+/// issue #4.
+Result<World> BuildWorld(const SceneDescription& scene);
+
+}  // namespace sparsedyn
