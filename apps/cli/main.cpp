@@ -3,11 +3,13 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/cli/run_command.hpp"
+#include "apps/cli/view_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"sparsedyn: event-driven collision detection and rigid-body simulation"};
   app.require_subcommand(1);
   sparsedyn::cli::AddRunCommand(app);
+  sparsedyn::cli::AddViewCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
