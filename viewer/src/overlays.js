@@ -29,7 +29,11 @@ function LineSet(capacity, color) {
   const geometry = new THREE.BufferGeometry();
   geometry.setAttribute('position', new THREE.BufferAttribute(new Float32Array(6 * capacity), 3));
   geometry.setDrawRange(0, 0);
-  const lines = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({color}));
+  // Drawn over the bodies: an engaged pair's centre line is mostly inside them.
+  const material = new THREE.LineBasicMaterial({color, depthTest: false, transparent: true,
+                                                opacity: 0.85});
+  const lines = new THREE.LineSegments(geometry, material);
+  lines.renderOrder = 1;
   lines.frustumCulled = false;
   return lines;
 }

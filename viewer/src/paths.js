@@ -94,7 +94,7 @@ export function EvalOrientation(segments, s, t, out) {
   const wx = w[3 * s];
   const wy = w[3 * s + 1];
   const wz = w[3 * s + 2];
-  const speed = Math.hypot(wx, wy, wz);
+  const speed = Math.sqrt(wx * wx + wy * wy + wz * wz);
   const half = 0.5 * speed * dt;
   // sin(half) / speed without dividing by zero: its series for small angles.
   const sinc = speed * dt === 0 ? 0.5 * dt

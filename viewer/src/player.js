@@ -3,15 +3,14 @@
 // (a cursor step), one polynomial evaluation and one quaternion per body, written straight into
 // the instance buffers. Collisions near the current time flash their two bodies.
 import {SpeedColor, SpeedScale} from './colormap.js';
-import {SegmentCursors, EvalPosition, EvalVelocity, EvalOrientation, WrapPosition}
-  from './paths.js';
+import {SegmentCursors, EvalVelocity, EvalOrientation, WrapPosition} from './paths.js';
 
 /** At most this many recent collisions flash at once (a dense gas has many per frame). */
 export const kMaxFlashes = 4096;
 
 // Column-major 4x4 rigid transform from a unit quaternion (w, x, y, z) and a translation.
 function WriteMatrix(m, at, q, p) {
-  const n = 1 / Math.hypot(q[0], q[1], q[2], q[3]);
+  const n = 1 / Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   const w = q[0] * n;
   const x = q[1] * n;
   const y = q[2] * n;
@@ -65,35 +64,55 @@ export class Player {
 
   /** Evaluates every body at time `t`; collisions within (t - flash_window, t] flash. */
   Update(t, flash_window) {
-    const segments = this.recording.segments;
-    const container = this.recording.header.container;
-    const p = [0, 0, 0];
-    const v = [0, 0, 0];
-    const q = [1, 0, 0, 0];
     for (const group of this.view.groups) {
-      const matrices = group.mesh.instanceMatrix.array;
-      const colors = group.mesh.instanceColor.array;
-      const bodies = group.bodies;
-      for (let slot = 0; slot < bodies.length; ++slot) {
-        const i = bodies[slot];
-        const s = this.cursors.Seek(i, t);
-        WrapPosition(container, EvalPosition(segments, s, t, p));
-        EvalOrientation(segments, s, t, q);
-        EvalVelocity(segments, s, t, v);
-        const speed = Math.hypot(v[0], v[1], v[2]);
-        this.speed[i] = speed;
-        this.position[3 * i] = p[0];
-        this.position[3 * i + 1] = p[1];
-        this.position[3 * i + 2] = p[2];
-        WriteMatrix(matrices, 16 * slot, q, p);
-        SpeedColor(speed, this.speed_scale, colors, 3 * slot);
-      }
-    }
-    this.Flash(t, flash_window);
-    for (const group of this.view.groups) {
+      const round = this.recording.header.shapes[group.shape].type === 'sphere';
+      this.UpdateGroup(group, t, round);
       group.mesh.instanceMatrix.needsUpdate = true;
       group.mesh.instanceColor.needsUpdate = true;
       group.mesh.boundingSphere = null; // recomputed on demand (picking)
+    }
+    this.Flash(t, flash_window);
+  }
+
+  // The hot loop (10^5 bodies per frame): the path polynomial written out, no allocation, and
+  // no orientation for spheres (a turning sphere looks the same) or non-spinning segments.
+  UpdateGroup(group, t, round) {
+    const {t0, position, velocity, acceleration, angular_velocity} = this.recording.segments;
+    const container = this.recording.header.container;
+    const wrap = container.kind === 'periodic';
+    const matrices = group.mesh.instanceMatrix.array;
+    const colors = group.mesh.instanceColor.array;
+    const bodies = group.bodies;
+    const p = [0, 0, 0];
+    const q = [1, 0, 0, 0];
+    for (let slot = 0; slot < bodies.length; ++slot) {
+      const i = bodies[slot];
+      const s = this.cursors.Seek(i, t);
+      const dt = t - t0[s];
+      const j = 3 * s;
+      const vx = velocity[j] + dt * acceleration[j];
+      const vy = velocity[j + 1] + dt * acceleration[j + 1];
+      const vz = velocity[j + 2] + dt * acceleration[j + 2];
+      p[0] = position[j] + dt * (velocity[j] + 0.5 * dt * acceleration[j]);
+      p[1] = position[j + 1] + dt * (velocity[j + 1] + 0.5 * dt * acceleration[j + 1]);
+      p[2] = position[j + 2] + dt * (velocity[j + 2] + 0.5 * dt * acceleration[j + 2]);
+      if (wrap) WrapPosition(container, p);
+      if (round) {
+        q[0] = 1;
+        q[1] = q[2] = q[3] = 0;
+      } else if (angular_velocity[j] === 0 && angular_velocity[j + 1] === 0 &&
+                 angular_velocity[j + 2] === 0) {
+        EvalOrientation(this.recording.segments, s, t0[s], q);
+      } else {
+        EvalOrientation(this.recording.segments, s, t, q);
+      }
+      const speed = Math.sqrt(vx * vx + vy * vy + vz * vz);
+      this.speed[i] = speed;
+      this.position[3 * i] = p[0];
+      this.position[3 * i + 1] = p[1];
+      this.position[3 * i + 2] = p[2];
+      WriteMatrix(matrices, 16 * slot, q, p);
+      SpeedColor(speed, this.speed_scale, colors, 3 * slot);
     }
   }
 
