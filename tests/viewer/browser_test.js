@@ -122,7 +122,7 @@ function AssertClose(shown, expected, what) {
 // the panel against `segments` (plain {body, t0, position, velocity, acceleration?} objects).
 async function CheckPickedState(page, {segments, collisions, container, masses}) {
   const c = collisions[Math.floor(collisions.length / 2)];
-  const t = c.time + 0.137;
+  const t = c.time + 0.0137;
   await page.evaluate((time) => {
     window.sparsedynViewer.pause();
     window.sparsedynViewer.seek(time);
@@ -221,7 +221,7 @@ function StartServer(file) {
 
 test('the served page (view --port 0) plays a periodic gas and derives engaged pairs',
      async () => {
-  const {fixture, file} = WriteFixture('fixture-gas', {kind: 'gas', n: 300, events: 200});
+  const {fixture, file} = WriteFixture('fixture-gas', {kind: 'gas', n: 200, events: 150});
   const {server, url} = await StartServer(file);
   try {
     const {page, errors} = await OpenPage(url);
@@ -234,6 +234,48 @@ test('the served page (view --port 0) plays a periodic gas and derives engaged p
     assert.match(await page.locator('#pair-count').textContent(), /^\(\d+\)$/);
     assert.ok(await page.locator('#show-features').isDisabled());
     await CheckBodiesDrawn(page, 'viewer-fixture-gas');
+    assert.deepEqual(errors, []);
+    await page.close();
+  } finally {
+    server.kill();
+  }
+});
+
+// The facts CheckPickedState needs, from `sparsedyn export-jsonl` (the C++ reader's view of the
+// file: an independent decoding of the same bytes).
+function ExportedFacts(file) {
+  const exported = spawnSync(cli, ['export-jsonl', file], {encoding: 'utf8',
+                                                           maxBuffer: 1 << 28});
+  assert.equal(exported.status, 0, exported.stderr);
+  const facts = {segments: [], collisions: [], container: null, masses: []};
+  for (const line of exported.stdout.split('\n')) {
+    if (!line) continue;
+    const r = JSON.parse(line);
+    if (r.record === 'header') facts.container = r.container;
+    if (r.record === 'body') facts.masses[r.index] = r.mass;
+    if (r.record === 'segment') facts.segments.push(r);
+    if (r.record === 'collision' && !(r.flags & 1)) facts.collisions.push(r);
+  }
+  return facts;
+}
+
+test('a recording made by sparsedyn run --record plays, and a picked body shows its state',
+     async (t) => {
+  const file = join(out_dir, 'cli-gas.sdrec');
+  const run = spawnSync(cli, ['run', '--preset', 'gas', '--n', '300', '--until', '3',
+                              '--record', file], {encoding: 'utf8'});
+  if (run.status !== 0 && /not supported/.test(run.stderr)) {
+    t.skip('this sparsedyn has no --record yet');
+    return;
+  }
+  assert.equal(run.status, 0, run.stderr);
+  const facts = ExportedFacts(file);
+  const {server, url} = await StartServer(file);
+  try {
+    const {page, errors} = await OpenPage(url);
+    await CheckClockAdvances(page);
+    await CheckPickedState(page, facts);
+    await CheckBodiesDrawn(page, 'viewer-cli-gas');
     assert.deepEqual(errors, []);
     await page.close();
   } finally {
