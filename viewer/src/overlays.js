@@ -48,10 +48,14 @@ function CollisionPoints(capacity) {
   return points;
 }
 
+// A magenta cage drawn through everything, so the selected body is found in a crowd.
 function SelectionMarker() {
-  const material = new THREE.MeshBasicMaterial({color: 0xffffff, wireframe: true});
+  const material = new THREE.MeshBasicMaterial({color: 0xff40f0, wireframe: true,
+                                                depthTest: false, transparent: true,
+                                                opacity: 0.9});
   const marker = new THREE.Mesh(new THREE.SphereGeometry(1, 16, 10), material);
   marker.visible = false;
+  marker.renderOrder = 2;
   return marker;
 }
 
@@ -171,7 +175,7 @@ export class Overlays {
     this.marker.visible = selected !== null;
     if (selected !== null) {
       this.marker.position.fromArray(player.position, 3 * selected);
-      this.marker.scale.setScalar(1.08 * radius[selected]);
+      this.marker.scale.setScalar(1.25 * radius[selected]);
     }
   }
 
