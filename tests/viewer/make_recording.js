@@ -13,7 +13,7 @@ import {fileURLToPath} from 'node:url';
 const kMagic = Buffer.from([0x53, 0x44, 0x52, 0x45, 0x43, 0x0d, 0x0a, 0x1a]);
 
 // A cube and a tetrahedron, centroid at the origin, faces counter-clockwise seen from outside.
-const kCube = {
+export const kCube = {
   type: 'polyhedron',
   vertices: [[-0.5, -0.5, -0.5], [0.5, -0.5, -0.5], [0.5, 0.5, -0.5], [-0.5, 0.5, -0.5],
              [-0.5, -0.5, 0.5], [0.5, -0.5, 0.5], [0.5, 0.5, 0.5], [-0.5, 0.5, 0.5]],

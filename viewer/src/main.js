@@ -25,7 +25,7 @@ const state = {
   playing: true,
   speed: 1,
   selected: null,
-  show: {spheres: false, pairs: false},
+  show: {spheres: false, pairs: false, features: false},
   frame_ms: 0,
   update_ms: 0,
   frames: 0,
@@ -118,7 +118,8 @@ function Frame(now) {
   state.frame_ms += k * (wall_dt * 1000 - state.frame_ms);
   state.frames++;
   ui.SetClock(state.t, state.playing);
-  ui.SetPairCount(state.show.pairs ? overlays.pair_count : null);
+  ui.SetPairCount(state.show.pairs || state.show.features ? overlays.pair_count : null);
+  ui.SetFeatureLineCount(state.show.features ? overlays.feature_lines : null);
   if (state.selected !== null) ui.ShowState(Inspect(state.selected), recording.header.shapes);
   ui.SetStatus(`${recording.bodies.count} bodies, ${recording.segments.t0.length} segments, ` +
                `${recording.collisions.count} collisions · update ${state.update_ms.toFixed(1)} ms` +
@@ -178,6 +179,8 @@ window.sparsedynViewer = {
   pickAt: (x, y) => PickBody(state.session.view, canvas, x, y),
   screenPoint: (i) => ScreenPoint(state.session.view, canvas,
                                   Array.from(state.session.player.position.subarray(3 * i, 3 * i + 3))),
+  overlayCounts: () => ({pairs: state.session.overlays.pair_count,
+                         feature_lines: state.session.overlays.feature_lines}),
   stats: () => ({update_ms: state.update_ms, frame_ms: state.frame_ms, frames: state.frames}),
 };
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Optional overlays drawn over the bodies: bounding spheres (the elements of the sparse phase),
-// engaged pairs, collision points and the selected body's marker.
+// engaged pairs, closest-feature lines of the engaged pairs (closest.js), collision points and
+// the selected body's marker.
 //
 // Engaged pairs: recording format v1 does not carry engagements, so the viewer derives them
 // from their definition (DESIGN.md glossary): two elements are engaged while their bounding
@@ -8,8 +9,12 @@
 // O(bodies) per frame; in a periodic box distances use the nearest image.
 import * as THREE from 'three';
 
+import {ClosestPoints, PairCost, ShapeFeatures} from './closest.js';
+
 /** Lines beyond this many engaged pairs are not drawn (the count is still reported). */
 export const kMaxPairLines = 50000;
+/** Feature tests per frame for closest-feature lines (a 600-face pair is ~4e6). */
+export const kFeatureBudget = 4e6;
 
 function BoundingSpheres(recording) {
   const n = recording.bodies.count;
@@ -157,11 +162,16 @@ export class Overlays {
     this.recording = recording;
     this.spheres = BoundingSpheres(recording);
     this.pairs = LineSet(kMaxPairLines, 0xff66cc);
+    this.closest = LineSet(kMaxPairLines, 0x7dffb0);
+    this.features = recording.header.shapes.map(ShapeFeatures);
+    this.feature_lines = 0;
     this.points = CollisionPoints(4096);
     this.marker = SelectionMarker();
     this.pair_count = 0;
-    this.show = {spheres: false, pairs: false};
-    for (const object of [this.spheres, this.pairs, this.points, this.marker]) scene.add(object);
+    this.show = {spheres: false, pairs: false, features: false};
+    for (const object of [this.spheres, this.pairs, this.closest, this.points, this.marker]) {
+      scene.add(object);
+    }
   }
 
   /** Redraws the overlays for the player's current body positions. */
@@ -170,7 +180,13 @@ export class Overlays {
     this.spheres.visible = this.show.spheres;
     if (this.show.spheres) this.UpdateSpheres(player.position, radius);
     this.pairs.visible = this.show.pairs;
-    if (this.show.pairs) this.UpdatePairs(player.position, radius);
+    this.closest.visible = this.show.features;
+    if (this.show.pairs || this.show.features) {
+      const pairs = OverlappingPairs(player.position, radius, this.recording.header.container);
+      this.pair_count = pairs.length / 2;
+      if (this.show.pairs) this.UpdatePairs(player.position, pairs);
+      if (this.show.features) this.UpdateClosest(player, pairs);
+    }
     this.UpdatePoints(player.flashing);
     this.marker.visible = selected !== null;
     if (selected !== null) {
@@ -195,10 +211,8 @@ export class Overlays {
     this.spheres.instanceMatrix.needsUpdate = true;
   }
 
-  UpdatePairs(position, radius) {
+  UpdatePairs(position, pairs) {
     const container = this.recording.header.container;
-    const pairs = OverlappingPairs(position, radius, container);
-    this.pair_count = pairs.length / 2;
     const out = this.pairs.geometry.attributes.position;
     const lines = Math.min(this.pair_count, kMaxPairLines);
     const periodic = container.kind === 'periodic';
@@ -214,6 +228,36 @@ export class Overlays {
     }
     out.needsUpdate = true;
     this.pairs.geometry.setDrawRange(0, 2 * lines);
+  }
+
+  // A line between the closest points of each engaged pair, within the frame's budget; in a
+  // periodic box B is taken at its image nearest to A.
+  UpdateClosest(player, pairs) {
+    const container = this.recording.header.container;
+    const shape_of = this.recording.bodies.shape;
+    const out = this.closest.geometry.attributes.position;
+    let lines = 0;
+    let spent = 0;
+    for (let l = 0; l < pairs.length / 2 && lines < kMaxPairLines; ++l) {
+      const a = pairs[2 * l];
+      const b = pairs[2 * l + 1];
+      const fa = this.features[shape_of[a]];
+      const fb = this.features[shape_of[b]];
+      spent += PairCost(fa, fb);
+      if (spent > kFeatureBudget) break;
+      const pa = Array.from(player.position.subarray(3 * a, 3 * a + 3));
+      const pb = [0, 1, 2].map((k) => pa[k] + Nearest(player.position[3 * b + k] - pa[k],
+          container.kind === 'periodic' ? container.hi[k] - container.lo[k] : 0));
+      const qa = Array.from(player.orientation.subarray(4 * a, 4 * a + 4));
+      const qb = Array.from(player.orientation.subarray(4 * b, 4 * b + 4));
+      const {a: xa, b: xb} = ClosestPoints(fa, qa, pa, fb, qb, pb);
+      out.array.set(xa, 6 * lines);
+      out.array.set(xb, 6 * lines + 3);
+      lines++;
+    }
+    this.feature_lines = lines;
+    out.needsUpdate = true;
+    this.closest.geometry.setDrawRange(0, 2 * lines);
   }
 
   UpdatePoints(flashing) {

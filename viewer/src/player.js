@@ -47,6 +47,7 @@ export class Player {
     this.cursors = new SegmentCursors(recording.segments);
     const n = recording.bodies.count;
     this.position = new Float64Array(3 * n); // drawn (wrapped) centres, for the overlays
+    this.orientation = new Float64Array(4 * n); // (w, x, y, z); identity for spheres
     this.speed = new Float64Array(n);
     this.speed_scale = SpeedScale(this.InitialSpeeds());
     this.flashing = []; // indices of the collisions flashing at the last update
@@ -111,6 +112,7 @@ export class Player {
       this.position[3 * i] = p[0];
       this.position[3 * i + 1] = p[1];
       this.position[3 * i + 2] = p[2];
+      for (let k = 0; k < 4; ++k) this.orientation[4 * i + k] = q[k];
       WriteMatrix(matrices, 16 * slot, q, p);
       SpeedColor(speed, this.speed_scale, colors, 3 * slot);
     }

@@ -29,7 +29,8 @@ export class Ui {
     this.dragging = false;
     this.$('play').addEventListener('click', () => on.toggle());
     doc.addEventListener('keydown', (e) => {
-      if (e.code === 'Space' && e.target.tagName !== 'INPUT') {
+      // Not when a control has the focus: space is its own key there (a button would toggle twice).
+      if (e.code === 'Space' && !['INPUT', 'BUTTON', 'SELECT'].includes(e.target.tagName)) {
         e.preventDefault();
         on.toggle();
       }
@@ -45,6 +46,8 @@ export class Ui {
     });
     this.$('show-spheres').addEventListener('change', (e) => on.overlay('spheres', e.target.checked));
     this.$('show-pairs').addEventListener('change', (e) => on.overlay('pairs', e.target.checked));
+    this.$('show-features').addEventListener('change',
+                                             (e) => on.overlay('features', e.target.checked));
     this.$('legend-bar').style.background = RampCss();
   }
 
@@ -73,6 +76,10 @@ export class Ui {
 
   SetPairCount(count) {
     this.$('pair-count').textContent = count === null ? '' : `(${count})`;
+  }
+
+  SetFeatureLineCount(count) {
+    this.$('feature-count').textContent = count === null ? '' : `(${count})`;
   }
 
   SetStatus(text) {
