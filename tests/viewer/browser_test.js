@@ -220,6 +220,21 @@ test('the self-contained page (view --html) plays a recording, picks and draws b
   await page.close();
 });
 
+test('a truncated recording plays what it has and says it is incomplete', async () => {
+  const fixture = MakeFixture({kind: 'mixed', n: 12, events: 8});
+  const whole = EncodeRecording(fixture);
+  const file = join(out_dir, 'fixture-truncated.sdrec');
+  writeFileSync(file, whole.subarray(0, whole.length - 40));
+  const html = join(out_dir, 'fixture-truncated.html');
+  const made = spawnSync(cli, ['view', file, '--html', html], {encoding: 'utf8'});
+  assert.equal(made.status, 0, made.stderr);
+  const {page, errors} = await OpenPage(pathToFileURL(html).href);
+  assert.match(await page.locator('#message').textContent(), /Incomplete recording .*truncated/);
+  await CheckClockAdvances(page);
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
 // Starts `sparsedyn view FILE --port 0` and resolves with its address once it prints it.
 function StartServer(file) {
   const server = spawn(cli, ['view', file, '--port', '0'], {stdio: ['ignore', 'pipe', 'pipe']});
