@@ -7,9 +7,9 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"sparsedyn: event-driven collision detection and rigid-body simulation"};
+  sparsedyn::cli::AddViewCommand(app);
   app.require_subcommand(1);
   sparsedyn::cli::AddRunCommand(app);
-  sparsedyn::cli::AddViewCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
