@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Installs the Debian 12 packages the build needs, only those missing (apt-get, with sudo when
-# not root). Sourced or run by scripts/run.sh, scripts/test.sh and .ci/run.
+# not root), then the web viewer's npm packages (npm ci in viewer/, from its package-lock.json)
+# when they are missing or older than the lock file. Run by scripts/run.sh, scripts/test.sh and
+# .ci/run.
 #   scripts/deps.sh            build + test dependencies
 #   scripts/deps.sh --peers    also the peer engines for bench/peers (Bullet, FCL, libccd)
 set -euo pipefail
 
 packages=(build-essential cmake pkg-config libeigen3-dev libqhull-dev libcli11-dev
           nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libassimp-dev
-          libfcl-dev libccd-dev libbullet-dev libcgal-dev libgmp-dev libmpfr-dev)
+          libfcl-dev libccd-dev libbullet-dev libcgal-dev libgmp-dev libmpfr-dev
+          libcpp-httplib-dev)
 if [[ "${1:-}" == "--peers" ]]; then
   packages+=(gnuplot-nox)
 fi
@@ -19,15 +22,28 @@ for p in "${packages[@]}"; do
     missing+=("$p")
   fi
 done
-if ((${#missing[@]} == 0)); then
-  exit 0
+# The viewer's tools are looked for as commands: a node from elsewhere (which brings its own
+# npm) must not be replaced by Debian's.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  missing+=(nodejs npm)
+fi
+if ! command -v chromium >/dev/null && ! command -v chromium-browser >/dev/null; then
+  missing+=(chromium)
 fi
 
-sudo_cmd=()
-if [[ $(id -u) -ne 0 ]]; then
-  sudo_cmd=(sudo)
+if ((${#missing[@]} > 0)); then
+  sudo_cmd=()
+  if [[ $(id -u) -ne 0 ]]; then
+    sudo_cmd=(sudo)
+  fi
+  echo "scripts/deps.sh: installing ${missing[*]}" >&2
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >&2
 fi
-echo "scripts/deps.sh: installing ${missing[*]}" >&2
-"${sudo_cmd[@]}" apt-get update -qq
-DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
-  "${missing[@]}" >&2
+
+viewer=$(cd "$(dirname "${BASH_SOURCE[0]}")/../viewer" && pwd)
+if [[ ! "$viewer/node_modules/.package-lock.json" -nt "$viewer/package-lock.json" ]]; then
+  echo "scripts/deps.sh: npm ci in viewer/" >&2
+  (cd "$viewer" && npm ci --no-audit --no-fund --loglevel=error >&2)
+fi

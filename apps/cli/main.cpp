@@ -6,9 +6,11 @@
 #include "apps/cli/distance_command.hpp"
 #include "apps/cli/export_command.hpp"
 #include "apps/cli/run_command.hpp"
+#include "apps/cli/view_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"sparsedyn: event-driven collision detection and rigid-body simulation"};
+  sparsedyn::cli::AddViewCommand(app);
   app.require_subcommand(1);
   // scripts/run.sh sets SPARSEDYN_PROGRAM so that hints name the command the user typed.
   const char* program = std::getenv("SPARSEDYN_PROGRAM");
