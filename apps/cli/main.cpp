@@ -10,13 +10,13 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"sparsedyn: event-driven collision detection and rigid-body simulation"};
-  sparsedyn::cli::AddViewCommand(app);
   app.require_subcommand(1);
   // scripts/run.sh sets SPARSEDYN_PROGRAM so that hints name the command the user typed.
   const char* program = std::getenv("SPARSEDYN_PROGRAM");
   sparsedyn::cli::AddRunCommand(app, program != nullptr && *program != '\0' ? program : argv[0]);
   sparsedyn::cli::AddDistanceCommand(app);
   sparsedyn::cli::AddExportCommand(app);
+  sparsedyn::cli::AddViewCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
