@@ -5,6 +5,9 @@
 #include <functional>
 #include <memory>
 
+#include <Eigen/Geometry>
+
+#include "sparsedyn/geometry/convex_polyhedron.hpp"
 #include "sparsedyn/result.hpp"
 #include "sparsedyn/statistics.hpp"
 #include "sparsedyn/types.hpp"
@@ -33,13 +36,29 @@ struct Container {
   }
 };
 
+/// How a polyhedron turns between events (docs/decisions/0003-rotation-model.md). Both keep the
+/// world-frame angular velocity constant between events, which makes every path analytic.
+enum class RotationModel {
+  /// The body's inertia is the isotropic tensor with the polyhedron's trace (a mass distribution
+  /// that turns like a sphere). Constant angular velocity is then its exact free motion: energy
+  /// and angular momentum are conserved exactly, between events and through collisions.
+  kSphericalTop,
+  /// The polyhedron's own inertia tensor (uniform density) at every impulse. Constant angular
+  /// velocity is then not the torque-free motion: between events the kinetic energy
+  /// 1/2 w.I(t)w and the angular momentum I(t)w of a non-isotropic body vary with its
+  /// orientation; collisions conserve both at the instant of impact.
+  kFullTensor,
+};
+
 /// World-wide settings; plain data with defaults.
 struct WorldSettings {
   Container container;
   Broadphase broadphase = Broadphase::kGrid;
   Vec3 gravity = Vec3::Zero();  // m/s^2, applies to every body
-  /// Spheres whose gap is below this fraction of their summed radii touch (contact tolerance).
+  /// Bodies whose gap is below this fraction of their summed (bounding) radii touch: the contact
+  /// tolerance.
   double contact_tolerance = 1e-9;
+  RotationModel rotation_model = RotationModel::kSphericalTop;
   /// Collisions approaching slower than this (m/s) are elastic: the collapse guard.
   double elastic_below_speed = 1e-6;
   /// Grid cells per body (the cells are never smaller than the largest interaction distance).
@@ -52,14 +71,20 @@ struct WorldSettings {
   bool profile_phases = false;  // measure Statistics::seconds_* (costs two clock reads an event)
 };
 
-/// A sphere body. Only `radius` has no useful default.
+/// A body: a sphere of `radius`, or the convex polyhedron `shape`.
 struct BodyDef {
-  double radius = 0.5;                 // m
-  Vec3 position = Vec3::Zero();        // centre, m
+  double radius = 0.5;                 // m; a sphere's radius (a polyhedron's is its bounding one)
+  /// The polyhedron in its body frame, or null for a sphere. The World places it by its
+  /// centroid: `position` is where the centroid goes. Shared between bodies of the same shape.
+  std::shared_ptr<const ConvexPolyhedron> shape;
+  Vec3 position = Vec3::Zero();        // centre of mass, m
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // body to world, unit
   Vec3 velocity = Vec3::Zero();        // m/s
+  Vec3 angular_velocity = Vec3::Zero();  // rad/s, world frame (polyhedra)
   Vec3 thrust = Vec3::Zero();          // acceleration of its own (App. F.3), added to gravity
   double mass = 1.0;                   // kg
   double restitution = 1.0;            // 1 = elastic; the collision uses the product of the two
+  double friction = 0.0;               // Coulomb coefficient; a pair uses sqrt(mu_a mu_b)
   Envelope envelope;                   // growth of the bounding sphere beyond the body (App. F)
 };
 
@@ -68,9 +93,11 @@ struct BodyState {
   Vec3 position = Vec3::Zero();
   Vec3 velocity = Vec3::Zero();
   Vec3 acceleration = Vec3::Zero();
-  double radius = 0.0;
+  double radius = 0.0;        // a sphere's radius or a polyhedron's bounding radius
   double mass = 0.0;
   std::uint32_t version = 0;  // number of path changes (segments) so far
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // body to world
+  Vec3 angular_velocity = Vec3::Zero();  // rad/s, world frame
 };
 
 /// A resolved collision, reported to OnCollision callbacks.
@@ -85,7 +112,8 @@ struct CollisionEvent {
 };
 
 /// A new motion segment of one body: from `t0` on its centre follows
-/// position + velocity (t - t0) + acceleration (t - t0)^2 / 2 until its next segment. Reported to
+/// position + velocity (t - t0) + acceleration (t - t0)^2 / 2 and its orientation is
+/// exp(angular_velocity (t - t0)) orientation, until its next segment. Reported to
 /// OnSegment callbacks whenever a body's path changes (a collision); the first segment of every
 /// body is its BodyDef at the time it was added. In a periodic box positions are not wrapped
 /// into the box between segments: wrap them when drawing.
@@ -96,6 +124,8 @@ struct MotionSegment {
   Vec3 velocity = Vec3::Zero();
   Vec3 acceleration = Vec3::Zero();
   std::uint32_t version = 0;  // the body's segment count after this change
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // at t0, body to world
+  Vec3 angular_velocity = Vec3::Zero();  // rad/s, world frame
 };
 
 /// Owns the bodies and runs the event loop: the sparse phase of the thesis (§3-§4) for
@@ -136,8 +166,9 @@ class World {
   const Statistics& Stats() const;
   const WorldSettings& Settings() const;
 
-  double KineticEnergy() const;   // at Time()
+  double KineticEnergy() const;   // at Time(), translational + rotational
   Vec3 Momentum() const;          // at Time()
+  Vec3 AngularMomentum() const;   // at Time(), about the world origin
   /// The deepest overlap of two bodies (or a body and a wall) seen at any processed event, m.
   double MaxPenetration() const;
   /// Checks at Time() that no two bodies overlap beyond the contact tolerance and that every

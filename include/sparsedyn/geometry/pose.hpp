@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace sparsedyn {
+
+/// A rigid placement X_WB of a body frame B in the world W: p_W = rotation * p_B + translation.
+struct Pose {
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  // unit
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+
+  Eigen::Vector3d ToWorld(const Eigen::Vector3d& p_B) const { return rotation * p_B + translation; }
+  Eigen::Vector3d ToBody(const Eigen::Vector3d& p_W) const {
+    return rotation.conjugate() * (p_W - translation);
+  }
+};
+
+}  // namespace sparsedyn

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+// The detailed phase's predictions (thesis §5.2, App. K): when does an engaged pair of convex
+// polyhedra, each on its rigid path, first come within the contact tolerance? Exact for
+// translating pairs (zone events: the closest feature pair changes at roots of polynomials in
+// t); a guaranteed lower bound for rotating ones (conservative advancement).
+#pragma once
+
+#include <optional>
+
+#include "motion/rigid_path.hpp"
+#include "sparsedyn/geometry/convex_polyhedron.hpp"
+#include "sparsedyn/narrow/closest_features.hpp"
+
+namespace sparsedyn {
+
+/// What a prediction found in [t_begin, t_end].
+struct ContactPrediction {
+  enum class Kind : std::uint8_t {
+    kContact,     // at `time` the distance is <= tolerance (never later than the true first time)
+    kNone,        // the distance stays > tolerance until t_end
+    kCheckpoint,  // the work cap was reached at `time` < t_end with distance > tolerance:
+                  // predict again from there (a detail event that only resumes the prediction)
+  };
+  Kind kind = Kind::kNone;
+  double time = 0.0;
+  ClosestFeatures features;  // the closest features at `time` (at t_end for kNone)
+  int iterations = 0;        // zone events or advancement steps taken
+};
+
+struct ContactPredictionOptions {
+  double tolerance = 0.0;  // contact when the distance <= tolerance (m, > 0)
+  int max_iterations = 64; // per call; beyond it kCheckpoint
+  ClosestFeaturesOptions walk;
+};
+
+/// The first time in [t_begin, t_end] at which A on `path_a` and B on `path_b` come within
+/// options.tolerance. `warm` is the feature pair last seen for this pair (coherence).
+/// Translating pairs (neither rotates, equal accelerations): exact up to round-off, by zone
+/// events. Otherwise: conservative advancement, never later than the true time.
+ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& path_a,
+                                 const TrackedPolyhedron& b, const RigidPath& path_b,
+                                 double t_begin, double t_end, std::optional<FeaturePair> warm,
+                                 const ContactPredictionOptions& options);
+
+/// A static plane: n.x >= offset is the allowed side (n unit, pointing into the container).
+struct WallContactPrediction {
+  ContactPrediction::Kind kind = ContactPrediction::Kind::kNone;
+  double time = 0.0;
+  int vertex = -1;      // the polyhedron's vertex nearest the plane at `time`
+  double gap = 0.0;     // its distance to the plane at `time`
+  int iterations = 0;
+};
+
+/// The first time in [t_begin, t_end] at which the polyhedron on `path` comes within `tolerance`
+/// of the plane {x : normal.x = offset}. Exact for a non-rotating body (a root of the nearest
+/// vertex's polynomial), conservative advancement for a rotating one.
+WallContactPrediction PredictWallContact(const ConvexPolyhedron& polyhedron, const RigidPath& path,
+                                         const Vec3& normal, double offset, double t_begin,
+                                         double t_end, double tolerance, int max_iterations = 64);
+
+}  // namespace sparsedyn
