@@ -23,8 +23,16 @@ struct Statistics {
   std::uint64_t predictions = 0;          // full predictions (actor against all its candidates)
   std::uint64_t partial_predictions = 0;  // after a cell crossing: against the new cells only
   std::uint64_t pair_tests = 0;           // element pairs whose meeting time was computed
+  // The detailed phase (polyhedra, §5.2): contact predictions of engaged pairs and of bodies
+  // near walls, the zone events / advancement steps they took, and the predictions that hit
+  // their work cap and resumed later (checkpoints).
+  std::uint64_t detail_predictions = 0;
+  std::uint64_t detail_iterations = 0;
+  std::uint64_t detail_checkpoints = 0;
+  std::uint64_t walk_cap_hits = 0;  // closest-feature walks that hit their iteration cap (0)
   // Wall-clock seconds by phase, measured only when WorldSettings::profile_phases is set.
   double seconds_sparse = 0;    // predictions (sparse phase)
+  double seconds_detailed = 0;  // closest features and contact predictions (detailed phase)
   double seconds_response = 0;  // collision response
   double seconds_queue = 0;     // queue maintenance
 };

@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "sparsedyn/narrow/closest_features.hpp"
 #include "sparsedyn/types.hpp"
 
 namespace sparsedyn {
@@ -19,7 +20,10 @@ class Engagements {
     std::uint32_t a = kNoIndex;
     std::uint32_t b = kNoIndex;
     bool contact_next = false;   // the queued detail event is a contact (else a separation)
+    bool checkpoint = false;     // ... or only resumes an unfinished contact prediction
     bool alive = false;
+    bool has_features = false;   // `features` holds the pair's last closest features
+    FeaturePair features;        // warm start of the next closest-feature query (coherence)
   };
 
   /// Engages a and b; returns the engagement id.
@@ -32,7 +36,10 @@ class Engagements {
       id = static_cast<std::uint32_t>(items_.size());
       items_.emplace_back();
     }
-    items_[id] = Engagement{a, b, false, true};
+    items_[id] = Engagement{};
+    items_[id].a = a;
+    items_[id].b = b;
+    items_[id].alive = true;
     by_body_[a].push_back(id);
     by_body_[b].push_back(id);
     ++active_;
@@ -67,6 +74,8 @@ class Engagements {
   Engagement& operator[](std::uint32_t id) { return items_[id]; }
   const Engagement& operator[](std::uint32_t id) const { return items_[id]; }
   std::size_t Active() const { return active_; }
+  /// Ends every engagement.
+  void Clear() { *this = Engagements{}; }
 
  private:
   void Unlink(std::uint32_t body, std::uint32_t id) {

@@ -35,8 +35,8 @@ std::string EncodeSegment(const RecordedSegment& segment) {
   return bytes;
 }
 
-// A sphere segment of the World; the acceleration is stored only when it is not zero.
-// TODO(#4): rotating bodies set has_rotation with their orientation and angular velocity.
+// A segment of the World; the acceleration is stored only when it is not zero, the orientation
+// and angular velocity only when the body is turned or turning (a sphere never is).
 RecordedSegment FromWorld(const MotionSegment& segment) {
   RecordedSegment record;
   record.body = segment.body.index;
@@ -45,6 +45,10 @@ RecordedSegment FromWorld(const MotionSegment& segment) {
   record.velocity = segment.velocity;
   record.acceleration = segment.acceleration;
   record.has_acceleration = !segment.acceleration.isZero(0.0);
+  record.orientation = segment.orientation;
+  record.angular_velocity = segment.angular_velocity;
+  record.has_rotation = !segment.angular_velocity.isZero(0.0) ||
+                        segment.orientation.coeffs() != Eigen::Quaterniond::Identity().coeffs();
   return record;
 }
 
@@ -186,8 +190,11 @@ void RecordingWriter::Attach(World& world) {
   const double t = world.Time();
   for (std::uint32_t i = 0; i < world.BodyCount(); ++i) {
     const BodyState state = world.StateAt(world.IdOf(i), t);
-    Write(MotionSegment{t, world.IdOf(i), state.position, state.velocity, state.acceleration,
-                        state.version});
+    MotionSegment segment{t, world.IdOf(i), state.position, state.velocity, state.acceleration,
+                          state.version};
+    segment.orientation = state.orientation;
+    segment.angular_velocity = state.angular_velocity;
+    Write(segment);
   }
   // The callbacks hold the Impl, whose address survives moves of the writer.
   Impl* impl = impl_.get();

@@ -82,26 +82,21 @@ Status WriteScene(const SceneDescription& scene, const std::filesystem::path& pa
 }
 
 Result<World> BuildWorld(const SceneDescription& scene) {
-  // Polyhedra are parsed and built, but the World simulates spheres only for now.
-  // TODO(#4): add polyhedral bodies (shape, orientation, angular velocity, friction, inertia).
-  if (const std::size_t polyhedra = scene.PolyhedralBodyCount(); polyhedra > 0) {
-    std::size_t first = 0;
-    while (scene.shapes[scene.bodies[first].shape].kind != SceneShape::Kind::kPolyhedron) ++first;
-    return Error{"bodies[" + std::to_string(first) + "]: polyhedral bodies are not simulated yet " +
-                 "(issue #4): " + std::to_string(polyhedra) + " of the " +
-                 std::to_string(scene.bodies.size()) +
-                 " bodies are polyhedra; the scene is valid, but only spheres can run today"};
-  }
   World world(scene.settings);
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const SceneBody& body = scene.bodies[i];
+    const SceneShape& shape = scene.shapes[body.shape];
     BodyDef def;
-    def.radius = scene.shapes[body.shape].radius;
+    def.radius = shape.radius;
+    def.shape = shape.polyhedron;  // null for a sphere; shared by the bodies of one shape
     def.position = body.position;
+    def.orientation = body.orientation;
     def.velocity = body.velocity;
+    def.angular_velocity = body.angular_velocity;
     def.thrust = body.thrust;
     def.mass = body.mass;
     def.restitution = body.restitution;
+    def.friction = body.friction;
     Result<BodyId> id = world.AddBody(def);
     if (!id) return Error{"bodies[" + std::to_string(i) + "]: " + id.error().message};
   }

@@ -30,10 +30,21 @@ std::optional<Error> CheckDefinition(const BodyDef& def, std::size_t index) {
   if (!std::isfinite(def.restitution) || def.restitution < 0 || def.restitution > 1) {
     return Error{body + "restitution must be in [0, 1], got " + Format(def.restitution)};
   }
+  if (!std::isfinite(def.friction) || def.friction < 0) {
+    return Error{body + "friction must be finite and >= 0, got " + Format(def.friction)};
+  }
+  const Eigen::Vector4d q = def.orientation.coeffs();
+  if (!q.allFinite() || std::abs(q.norm() - 1.0) > 1e-6) {
+    return Error{body + "orientation must be a finite unit quaternion, got norm " +
+                 Format(q.norm())};
+  }
   const struct {
     const char* name;
     const Vec3& value;
-  } vectors[] = {{"position", def.position}, {"velocity", def.velocity}, {"thrust", def.thrust}};
+  } vectors[] = {{"position", def.position},
+                 {"velocity", def.velocity},
+                 {"angular_velocity", def.angular_velocity},
+                 {"thrust", def.thrust}};
   for (const auto& [name, value] : vectors) {
     for (int k = 0; k < 3; ++k) {
       if (!std::isfinite(value[k])) {
@@ -117,14 +128,45 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   const std::size_t index = starts_.size();
   if (std::optional<Error> error = CheckDefinition(def, index)) return *error;
   const std::string body = "body " + std::to_string(index) + ": ";
+  const bool polyhedron = def.shape != nullptr;
+  if (index > 0 && polyhedron != polyhedra_) {
+    return Error{body + "a World holds spheres or polyhedra, not both (this body is a " +
+                 (polyhedron ? "polyhedron" : "sphere") + ", body 0 is not)"};
+  }
+  if (polyhedron && !def.envelope.IsZero()) {
+    return Error{body + "envelopes are for spheres; a polyhedron's path is exact"};
+  }
+  if (polyhedron && started_) {
+    return Error{body + "polyhedra are added before the first AdvanceTo"};
+  }
+  std::uint32_t shape = kNoIndex;
+  if (polyhedron) {
+    Result<std::uint32_t> added = AddShape(def.shape);
+    if (!added) return Error{body + added.error().message};
+    shape = *added;
+  }
+  // A polyhedron's element sphere is its bounding sphere about the centroid.
+  const double radius = polyhedron ? shapes_[shape].polyhedron->bounding_radius() : def.radius;
 
   // Inside the container.
   const Container& box = settings_.container;
-  if (box.kind == Container::Kind::kWalledBox) {
+  if (polyhedron && box.kind == Container::Kind::kWalledBox) {
+    const ConvexPolyhedron& poly = *shapes_[shape].polyhedron;
+    for (int v = 0; v < poly.vertex_count(); ++v) {
+      const Vec3 x = def.orientation * poly.vertex(v) + def.position;
+      for (int k = 0; k < 3; ++k) {
+        if (x[k] < box.lo[k] || x[k] > box.hi[k]) {
+          return Error{body + "vertex " + std::to_string(v) + " lies outside the walled box " +
+                       "on axis " + std::to_string(k) + " (" + Format(x[k]) + " not in [" +
+                       Format(box.lo[k]) + ", " + Format(box.hi[k]) + "])"};
+        }
+      }
+    }
+  } else if (box.kind == Container::Kind::kWalledBox) {
     for (int k = 0; k < 3; ++k) {
-      if (def.position[k] - def.radius < box.lo[k] || def.position[k] + def.radius > box.hi[k]) {
+      if (def.position[k] - radius < box.lo[k] || def.position[k] + radius > box.hi[k]) {
         return Error{body + "position[" + std::to_string(k) + "] = " + Format(def.position[k]) +
-                     " puts the sphere (radius " + Format(def.radius) +
+                     " puts the sphere (radius " + Format(radius) +
                      ") outside the walled box [" + Format(box.lo[k]) + ", " +
                      Format(box.hi[k]) + "]"};
       }
@@ -136,13 +178,19 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
                      " is outside the periodic box [" + Format(box.lo[k]) + ", " +
                      Format(box.hi[k]) + ")"};
       }
-      if (2 * def.radius >= 0.5 * (box.hi[k] - box.lo[k])) {
-        return Error{body + "radius " + Format(def.radius) +
+      if (2 * radius >= 0.5 * (box.hi[k] - box.lo[k])) {
+        return Error{body + "radius " + Format(radius) +
                      " is too large for the periodic box (diameter must be < half the box)"};
       }
     }
   }
-  if (std::optional<std::uint32_t> other = FindOverlap(def.position, def.radius)) {
+  if (polyhedron) {
+    double distance = 0;
+    if (std::optional<std::uint32_t> other = FindPolyhedronOverlap(def, shape, distance)) {
+      return Error{body + "touches or overlaps body " + std::to_string(*other) +
+                   " at the start (distance " + Format(distance) + ")"};
+    }
+  } else if (std::optional<std::uint32_t> other = FindOverlap(def.position, def.radius)) {
     return Error{body + "overlaps body " + std::to_string(*other) + " at the start (t = " +
                  Format(now_) + ")"};
   }
@@ -155,12 +203,18 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
     acceleration_.assign(index, uniform_acceleration_);
   }
   if (own_accelerations_) acceleration_.push_back(acceleration);
-  if (!started_) overlap_index_.Add(def.position, def.radius);
-  const std::array<double, 3> material{def.radius, 1.0 / def.mass, def.restitution};
+  if (!started_) overlap_index_.Add(def.position, radius);
+  const std::array<double, 4> material{radius, 1.0 / def.mass, def.restitution, def.friction};
   const auto [found, added] = material_index_.try_emplace(
       material, static_cast<std::uint32_t>(materials_.size()));
-  if (added) materials_.push_back(Material{material[0], material[1], material[2]});
+  if (added) materials_.push_back(Material{material[0], material[1], material[2], material[3]});
   material_.push_back(found->second);
+  if (polyhedron) {
+    polyhedra_ = true;
+    shape_.push_back(shape);
+    q0_.push_back(def.orientation.normalized());
+    omega_.push_back(def.angular_velocity);
+  }
   if (!def.envelope.IsZero() && !has_envelopes_) {
     has_envelopes_ = true;
     envelope_.resize(index);
@@ -171,8 +225,8 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   internal_of_.push_back(static_cast<std::uint32_t>(index));
   event_.emplace_back();
   candidate_.emplace_back();
-  const bool larger = def.radius > max_radius_;
-  max_radius_ = std::max(max_radius_, def.radius);
+  const bool larger = radius > max_radius_;
+  max_radius_ = std::max(max_radius_, radius);
   if (started_) {
     // A bigger body or the first envelope can change the broad phase: rebuild it.
     if (larger || (has_envelopes_ && grid_)) {
@@ -195,14 +249,18 @@ void World::Impl::Start() {
   grid_.reset();
   all_pairs_.reset();
   queue_.Clear();
+  engagement_queue_.Clear();
+  engagements_.Clear();
 
   // Rebase every path at the current time so that cells and predictions start from now.
   for (std::uint32_t i = 0; i < n; ++i) {
+    if (polyhedra_) q0_[i] = RigidPathOf(i).OrientationAt(now_).normalized();
     const Path path = PathOf(i).RebasedAt(now_);
     starts_[i] = PathStart{WrapIntoBox(path.p0), path.v0, path.t0};
   }
 
-  straight_lines_ = !has_envelopes_;
+  // The fast scan skips the engaged-pair check: only for spheres without envelopes.
+  straight_lines_ = !has_envelopes_ && !polyhedra_;
   straight_lines_ = straight_lines_ && !own_accelerations_ && uniform_acceleration_.isZero(0.0);
 
   // The grid needs a box and bounded element radii (an envelope grows without bound).
@@ -230,15 +288,21 @@ void World::Impl::Start() {
     if (grid_) grid_->Insert(i, starts_[i].p0);
     if (all_pairs_) all_pairs_->Insert(i, starts_[i].p0);
   }
-  if (grid_) Reorder();  // start in spatial order
+  if (grid_ && !EngagesOnMeet()) Reorder();  // start in spatial order
   events_since_reorder_ = 0;
+  if (polyhedra_) EngageOverlappingAtStart();
   for (std::uint32_t i = 0; i < n; ++i) PredictFull(i);
 }
 
 BodyState World::Impl::StateAt(std::uint32_t i, double t) const {
   const Path& path = PathOf(i);
-  return BodyState{WrapIntoBox(path.PositionAt(t)), path.VelocityAt(t), path.a, Radius(i),
-                   1.0 / InvMass(i), version_[i]};
+  BodyState state{WrapIntoBox(path.PositionAt(t)), path.VelocityAt(t), path.a, Radius(i),
+                  1.0 / InvMass(i), version_[i]};
+  if (polyhedra_) {
+    state.orientation = RigidPathOf(i).OrientationAt(t).normalized();
+    state.angular_velocity = omega_[i];
+  }
+  return state;
 }
 
 double World::Impl::KineticEnergy() const {
@@ -246,8 +310,26 @@ double World::Impl::KineticEnergy() const {
   double energy = 0;
   for (const std::uint32_t i : internal_of_) {
     energy += 0.5 / InvMass(i) * PathOf(i).VelocityAt(now_).squaredNorm();
+    if (polyhedra_) {
+      const Eigen::Matrix3d r = RigidPathOf(i).OrientationAt(now_).toRotationMatrix();
+      const Vec3 w_B = r.transpose() * omega_[i];  // 1/2 w.I w in body axes
+      energy += 0.5 / InvMass(i) * w_B.dot(ShapeOf(i).unit_inertia * w_B);
+    }
   }
   return energy;
+}
+
+Vec3 World::Impl::AngularMomentum() const {
+  Vec3 momentum = Vec3::Zero();
+  for (const std::uint32_t i : internal_of_) {
+    const Path path = PathOf(i);
+    momentum += path.PositionAt(now_).cross(path.VelocityAt(now_)) / InvMass(i);
+    if (polyhedra_) {
+      const Eigen::Matrix3d r = RigidPathOf(i).OrientationAt(now_).toRotationMatrix();
+      momentum += r * (ShapeOf(i).unit_inertia * (r.transpose() * omega_[i])) / InvMass(i);
+    }
+  }
+  return momentum;
 }
 
 Vec3 World::Impl::Momentum() const {
@@ -259,6 +341,7 @@ Vec3 World::Impl::Momentum() const {
 }
 
 Status World::Impl::Validate() const {
+  if (polyhedra_) return ValidatePolyhedra();
   const auto n = static_cast<std::uint32_t>(starts_.size());
   const double tolerance = settings_.contact_tolerance;
   auto check_pair = [&](std::uint32_t i, std::uint32_t j) -> std::optional<Error> {
@@ -305,13 +388,15 @@ std::size_t World::Impl::MemoryBytes() const {
   std::size_t bytes = starts_.capacity() * sizeof(PathStart) +
                       acceleration_.capacity() * sizeof(Vec3) +
                       materials_.capacity() * sizeof(Material) +
-                      material_index_.size() * (sizeof(std::array<double, 3>) + 40) +
+                      material_index_.size() * (sizeof(std::array<double, 4>) + 40) +
                       material_.capacity() * sizeof(std::uint32_t) +
                       envelope_.capacity() * sizeof(Envelope) +
                       (version_.capacity() + public_of_.capacity() + internal_of_.capacity()) *
                           sizeof(std::uint32_t) +
                       event_.capacity() * sizeof(PendingEvent) + candidate_.capacity() * sizeof(Candidate) +
                       queue_.MemoryBytes() + engagement_queue_.MemoryBytes();
+  bytes += shape_.capacity() * sizeof(std::uint32_t) +
+           q0_.capacity() * sizeof(Eigen::Quaterniond) + omega_.capacity() * sizeof(Vec3);
   if (grid_) bytes += grid_->MemoryBytes();
   if (all_pairs_) bytes += all_pairs_->MemoryBytes();
   return bytes;
@@ -344,6 +429,7 @@ const Statistics& World::Stats() const { return impl_->stats_; }
 const WorldSettings& World::Settings() const { return impl_->settings_; }
 double World::KineticEnergy() const { return impl_->KineticEnergy(); }
 Vec3 World::Momentum() const { return impl_->Momentum(); }
+Vec3 World::AngularMomentum() const { return impl_->AngularMomentum(); }
 double World::MaxPenetration() const { return impl_->max_penetration_; }
 Status World::Validate() const { return impl_->Validate(); }
 std::size_t World::MemoryBytes() const { return impl_->MemoryBytes(); }

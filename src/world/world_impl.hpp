@@ -2,10 +2,12 @@
 #pragma once
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <array>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -16,6 +18,8 @@
 #include "events/event.hpp"
 #include "events/heap_queue.hpp"
 #include "motion/path.hpp"
+#include "motion/rigid_path.hpp"
+#include "narrow/time_of_contact.hpp"
 #include "sparse/meeting.hpp"
 #include "sparsedyn/world.hpp"
 #include "world/overlap_index.hpp"
@@ -34,6 +38,7 @@ class World::Impl {
   BodyState StateAt(std::uint32_t i, double t) const;
   double KineticEnergy() const;
   Vec3 Momentum() const;
+  Vec3 AngularMomentum() const;
   Status Validate() const;
   std::size_t MemoryBytes() const;
 
@@ -56,10 +61,11 @@ class World::Impl {
     double radius;
     double inv_mass;
     double restitution;
+    double friction;
   };
   std::vector<Material> materials_;
   std::vector<std::uint32_t> material_;     // per body, into materials_
-  std::map<std::array<double, 3>, std::uint32_t> material_index_;  // (r, 1/m, e) -> material
+  std::map<std::array<double, 4>, std::uint32_t> material_index_;  // (r, 1/m, e, mu) -> material
 
   Path PathOf(std::uint32_t i) const {
     const PathStart& s = starts_[i];
@@ -68,6 +74,37 @@ class World::Impl {
   double Radius(std::uint32_t i) const { return materials_[material_[i]].radius; }
   double InvMass(std::uint32_t i) const { return materials_[material_[i]].inv_mass; }
   double Restitution(std::uint32_t i) const { return materials_[material_[i]].restitution; }
+  double Friction(std::uint32_t i) const { return materials_[material_[i]].friction; }
+
+  // --- polyhedra (issue #4; empty in a World of spheres) ---
+  struct Shape {  // shared by every body of that shape
+    std::shared_ptr<const ConvexPolyhedron> given;       // BodyDef::shape (keeps its address)
+    std::shared_ptr<const ConvexPolyhedron> polyhedron;  // centroid at the body-frame origin
+    std::shared_ptr<const TrackedPolyhedron> tracked;    // the walk's tables
+    Eigen::Matrix3d unit_inertia;      // inertia per unit mass, body frame (RotationModel)
+    Eigen::Matrix3d unit_inv_inertia;  // its inverse
+  };
+  std::vector<Shape> shapes_;
+  std::map<const ConvexPolyhedron*, std::uint32_t> shape_index_;  // as given in BodyDef::shape
+  std::vector<std::uint32_t> shape_;        // per body, into shapes_
+  std::vector<Eigen::Quaterniond> q0_;      // per body: orientation at its segment start
+  std::vector<Vec3> omega_;                 // per body: angular velocity, world frame
+  bool polyhedra_ = false;
+  // Set while a body that touched a wall without approaching it predicts again: that wall is
+  // then left alone for the time the body needs to close the tolerance band.
+  std::optional<std::pair<std::uint32_t, int>> wall_band_skip_;
+
+  RigidPath RigidPathOf(std::uint32_t i) const {
+    return RigidPath{PathOf(i), q0_[i], omega_[i]};
+  }
+  const Shape& ShapeOf(std::uint32_t i) const { return shapes_[shape_[i]]; }
+  /// Inverse inertia in the world frame at orientation q.
+  Eigen::Matrix3d InvInertiaWorld(std::uint32_t i, const Eigen::Quaterniond& q) const {
+    const Eigen::Matrix3d r = q.toRotationMatrix();
+    return InvMass(i) * r * ShapeOf(i).unit_inv_inertia * r.transpose();
+  }
+  /// Elements' spheres that meet become engaged and the detailed phase watches them.
+  bool EngagesOnMeet() const { return has_envelopes_ || polyhedra_; }
   std::vector<Envelope> envelope_;          // empty unless some body has an envelope
   std::vector<std::uint32_t> version_;      // path changes so far
   std::vector<PendingEvent> event_;         // each element's one outstanding prediction (§4)
@@ -124,6 +161,24 @@ class World::Impl {
   void PredictEngagement(std::uint32_t k);
   void PredictEngagementsOf(std::uint32_t i);
 
+  // --- the detailed phase for polyhedra (world_polyhedra.cpp) ---
+  Result<std::uint32_t> AddShape(const std::shared_ptr<const ConvexPolyhedron>& shape);
+  std::optional<std::uint32_t> FindPolyhedronOverlap(const BodyDef& def, std::uint32_t shape,
+                                                     double& distance) const;
+  Vec3 PairShift(std::uint32_t a, std::uint32_t b) const;
+  double PairTolerance(std::uint32_t a, std::uint32_t b) const;
+  ClosestFeatures PairFeatures(std::uint32_t a, std::uint32_t b, const Vec3& shift,
+                               std::optional<FeaturePair> warm) const;
+  void EngageOverlappingAtStart();
+  void PredictPolyhedralEngagement(std::uint32_t k);
+  void HandlePolyhedralEngagement(std::uint32_t k);
+  bool CollidePolyhedra(std::uint32_t a, std::uint32_t b, const ClosestFeatures& features,
+                        const Vec3& shift);
+  Event PredictPolyhedronWalls(std::uint32_t i, Event event);
+  void HandlePolyhedronWall(std::uint32_t i);
+  void SetMotion(std::uint32_t i, const Vec3& v, const Vec3& omega);
+  Status ValidatePolyhedra() const;
+
   // --- handlers (world_loop.cpp) ---
   void Dispatch(const QueueTop& top, bool engagement);
   void HandleSphereMeet(std::uint32_t i);
@@ -157,6 +212,13 @@ class PhaseTimer {
   double* sink_;
   std::chrono::steady_clock::time_point start_;
 };
+
+/// Absolute event time now + dt rounded down, so that rounding never makes an event late.
+inline double EventTime(double now, double dt) {
+  if (dt == kInfinity) return kInfinity;
+  const double t = now + dt;
+  return (t - now > dt) ? std::nextafter(t, -kInfinity) : t;
+}
 
 /// Wall planes of a walled box: inward unit normal n and offset d (n.x >= d inside).
 struct WallPlane {

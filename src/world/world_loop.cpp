@@ -108,7 +108,7 @@ void World::Impl::HandleSphereMeet(std::uint32_t i) {
     return;
   }
   ++stats_.meetings;
-  if (has_envelopes_) {
+  if (EngagesOnMeet()) {
     // The element spheres meet; the bodies inside may not: engage (§3.3) and let the detailed
     // phase watch the pair while the actor looks for its next sparse meeting.
     if (!engagements_.Engaged(i, j)) {
@@ -174,6 +174,10 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
 }
 
 void World::Impl::HandleWallMeet(std::uint32_t i) {
+  if (polyhedra_) {
+    HandlePolyhedronWall(i);
+    return;
+  }
   const PendingEvent event = event_[i];
   const WallPlane plane = BoxWall(settings_.container, event.aux);
   const Vec3 p = PathOf(i).PositionAt(now_);
@@ -205,6 +209,10 @@ void World::Impl::HandleWallMeet(std::uint32_t i) {
 }
 
 void World::Impl::HandleEngagement(std::uint32_t k) {
+  if (polyhedra_) {
+    HandlePolyhedralEngagement(k);
+    return;
+  }
   const Engagements::Engagement e = engagements_[k];
   if (e.contact_next) {
     Vec3 normal;

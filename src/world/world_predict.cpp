@@ -6,17 +6,6 @@
 #include "world/world_impl.hpp"
 
 namespace sparsedyn {
-namespace {
-
-// Absolute event time now + dt rounded down, so that rounding never makes an event late.
-double EventTime(double now, double dt) {
-  if (dt == kInfinity) return kInfinity;
-  const double t = now + dt;
-  return (t - now > dt) ? std::nextafter(t, -kInfinity) : t;
-}
-
-}  // namespace
-
 Mover World::Impl::MoverOf(std::uint32_t i, double t) const {
   if (has_envelopes_) return MoverAt(PathOf(i), Radius(i), envelope_[i], t);
   return MoverAt(PathOf(i), Radius(i), t);
@@ -29,7 +18,7 @@ Mover World::Impl::BodyMoverOf(std::uint32_t i, double t) const {
 void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift,
                                   Candidate& best) {
   // An engaged pair is tracked by its engagement, not by the sparse phase.
-  if (has_envelopes_ && engagements_.HasAny(i) && engagements_.Engaged(i, j)) return;
+  if (EngagesOnMeet() && engagements_.HasAny(i) && engagements_.Engaged(i, j)) return;
   ++stats_.pair_tests;
   // Predict from the later of the two segment starts, not from `now`: the result then depends
   // only on the two paths, so a prediction kept across cell crossings, or made by another broad
@@ -104,9 +93,13 @@ Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
                                                axis, direction);
   } else {
     const Mover m0 = BodyMoverOf(i, t0);
-    std::uint8_t wall = 0;
-    const double wall_time = std::max(now_, EventTime(t0, PredictWall(m0, wall)));
-    if (wall_time < event.time) event = Event{wall_time, EventKind::kWallMeet, wall, kNoIndex, 0};
+    if (!polyhedra_) {  // a polyhedron meets the walls after its cell crossing is known
+      std::uint8_t wall = 0;
+      const double wall_time = std::max(now_, EventTime(t0, PredictWall(m0, wall)));
+      if (wall_time < event.time) {
+        event = Event{wall_time, EventKind::kWallMeet, wall, kNoIndex, 0};
+      }
+    }
     crossing_dt = grid_ ? grid_->PredictCrossing(m0, grid_->CellOf(i), now_ - t0, axis, direction)
                         : all_pairs_->PredictCrossing(m0, 0, now_ - t0, axis, direction);
   }
@@ -115,6 +108,9 @@ Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
     event = Event{crossing_time, EventKind::kCellCrossing,
                   static_cast<std::uint8_t>(axis * 2 + (direction > 0 ? 1 : 0)), kNoIndex, 0};
   }
+  // The walls are the detailed phase's business for a polyhedron, and only up to the element's
+  // next event (after which it predicts again).
+  if (polyhedra_ && walled) event = PredictPolyhedronWalls(i, event);
   return event;
 }
 
@@ -178,6 +174,10 @@ void World::Impl::PredictAfterCrossing(std::uint32_t i, int axis, int direction)
 }
 
 void World::Impl::PredictEngagement(std::uint32_t k) {
+  if (polyhedra_) {
+    PredictPolyhedralEngagement(k);
+    return;
+  }
   Engagements::Engagement& e = engagements_[k];
   // The periodic image of b nearest to a (zero shift outside periodic boxes).
   const Vec3 d = PathOf(e.b).PositionAt(now_) - PathOf(e.a).PositionAt(now_);
@@ -196,7 +196,7 @@ void World::Impl::PredictEngagement(std::uint32_t k) {
 }
 
 void World::Impl::PredictEngagementsOf(std::uint32_t i) {
-  if (!has_envelopes_ || !engagements_.HasAny(i)) return;
+  if (!EngagesOnMeet() || !engagements_.HasAny(i)) return;
   for (const std::uint32_t k : engagements_.Of(i)) PredictEngagement(k);
 }
 

@@ -25,7 +25,8 @@ void PermuteVector(std::vector<T>& values, const std::vector<std::uint32_t>& old
 }  // namespace
 
 void World::Impl::MaybeReorder() {
-  if (!grid_) return;  // AllPairs visits every element anyway; engagements need no grid
+  // AllPairs visits every element anyway; engagements hold element indices.
+  if (!grid_ || EngagesOnMeet()) return;
   if (++events_since_reorder_ < kEventsPerElementBetweenReorders * starts_.size()) return;
   events_since_reorder_ = 0;
   Reorder();

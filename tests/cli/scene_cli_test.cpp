@@ -93,14 +93,19 @@ TEST_F(CliScene, BadSceneFileFailsNamingThePathAndRunsNothing) {
   EXPECT_NE(mixed.out.find("--n applies to presets, not to a scene file"), std::string::npos);
 }
 
-TEST_F(CliScene, PolyhedralScenesAreRefusedUntilIssue4) {
+TEST_F(CliScene, PolyhedralScenesRun) {
   std::ofstream(Path("poly.json")) << R"({"bodies": [
-      {"shape": {"generator": "dodecahedron"}, "velocity": [1, 0, 0]}]})";
-  const Output result = RunCli("run " + Path("poly.json"), /*with_stderr=*/true);
-  EXPECT_EQ(result.status, 2);
-  EXPECT_NE(result.out.find("polyhedral bodies are not simulated yet (issue #4)"),
-            std::string::npos)
-      << result.out;
+      {"shape": {"generator": "dodecahedron"}, "velocity": [1, 0, 0]},
+      {"shape": {"generator": "cube"}, "position": [4, 0.3, 0], "angular_velocity": [0, 1, 0]}],
+      "duration": 5})";
+  const Output result = RunCli("run " + Path("poly.json") + " --json --no-record",
+                               /*with_stderr=*/true);
+  ASSERT_EQ(result.status, 0) << result.out;
+  const nlohmann::json summary = nlohmann::json::parse(result.out);
+  EXPECT_GE(summary["collisions"].get<int>(), 1) << result.out;
+  EXPECT_NEAR(summary["kinetic_energy_final"].get<double>(),
+              summary["kinetic_energy_initial"].get<double>(),
+              1e-12 * summary["kinetic_energy_initial"].get<double>());
 }
 
 TEST_F(CliScene, MainJobRecordsTheDefaultSceneAndPrintsTheViewCommand) {

@@ -188,7 +188,7 @@ TEST(SceneFileWorld, OverlapAndOutsideTheContainerNameTheBody) {
   EXPECT_EQ(world.error().message.rfind("bodies[0]: ", 0), 0u) << world.error().message;
 }
 
-TEST(SceneFileWorld, PolyhedraAreParsedButNotRunYet) {
+TEST(SceneFileWorld, PolyhedraAreBuiltAndMixedWorldsRefused) {
   Result<SceneDescription> scene =
       ParseScene(std::string(R"({"bodies": [{)") + kSphere +
                      R"(}, {"shape": {"generator": "random_convex", "faces": 60, "seed": 3},)"
@@ -203,8 +203,21 @@ TEST(SceneFileWorld, PolyhedraAreParsedButNotRunYet) {
   Result<World> world = BuildWorld(*scene);
   ASSERT_FALSE(world.ok());
   EXPECT_EQ(world.error().message,
-            "bodies[1]: polyhedral bodies are not simulated yet (issue #4): 1 of the 2 bodies are "
-            "polyhedra; the scene is valid, but only spheres can run today");
+            "bodies[1]: body 1: a World holds spheres or polyhedra, not both (this body is a "
+            "polyhedron, body 0 is not)");
+
+  Result<SceneDescription> polyhedra = ParseScene(
+      R"({"bodies": [{"shape": {"generator": "random_convex", "faces": 60, "seed": 3},)"
+      R"( "orientation": [0, 1, 0, 0], "angular_velocity": [0, 0, 2], "density": 2},)"
+      R"( {"shape": {"generator": "dodecahedron"}, "position": [5, 0, 0]}]})",
+      "p.json", kDataDir);
+  ASSERT_TRUE(polyhedra.ok()) << polyhedra.error().message;
+  Result<World> built = BuildWorld(*polyhedra);
+  ASSERT_TRUE(built.ok()) << built.error().message;
+  const BodyState s = built->StateAt(built->IdOf(0), 0.0);
+  EXPECT_EQ(s.radius, polyhedra->shapes[polyhedra->bodies[0].shape].radius);
+  EXPECT_EQ(s.angular_velocity, Vec3(0, 0, 2));
+  EXPECT_NEAR(std::abs(s.orientation.x()), 1.0, 1e-15);  // 180 degrees about x
 }
 
 // --- what valid files say ---------------------------------------------------------------------
