@@ -128,8 +128,10 @@ struct MotionSegment {
   Vec3 angular_velocity = Vec3::Zero();  // rad/s, world frame
 };
 
-/// Owns the bodies and runs the event loop: the sparse phase of the thesis (§3-§4) for
-/// spheres. Nothing is computed between events; a body's state at any time comes from its path.
+/// Owns the bodies and runs the event loop: the sparse phase of the thesis (§3-§4) on the
+/// bodies' spheres and, for polyhedra, the detailed phase of engaged pairs (§5.2,
+/// docs/detailed-phase.md). Nothing is computed between events; a body's state at any time
+/// comes from its path.
 class World {
  public:
   explicit World(const WorldSettings& settings = {});
@@ -140,8 +142,10 @@ class World {
   World& operator=(const World&) = delete;
 
   /// Adds a body at the current time. Refused, with nothing changed, when a value is NaN/Inf,
-  /// radius or mass <= 0, restitution outside [0, 1], an envelope coefficient < 0, the body lies
-  /// outside the container, or it overlaps a body already present.
+  /// radius or mass <= 0, restitution outside [0, 1], friction < 0, the orientation is not a
+  /// unit quaternion, an envelope coefficient < 0, the body lies outside the container, it
+  /// overlaps (polyhedra: touches) a body already present, it would mix spheres and polyhedra
+  /// in one World, or it is a polyhedron added after the first AdvanceTo.
   Result<BodyId> AddBody(const BodyDef& def);
 
   /// Processes every event with time <= t, then sets the clock to t. Fails (clock at the last
