@@ -3,10 +3,14 @@
 // a gap along a fixed direction stay apart, given a bound on how fast the gap can close.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "math/polynomial.hpp"
 #include "math/roots.hpp"
+#include "motion/rigid_path.hpp"
+#include "sparsedyn/geometry/convex_polyhedron.hpp"
 
 namespace sparsedyn::narrow {
 
@@ -18,6 +22,19 @@ inline std::optional<double> AdvancementStep(double closable, double speed, doub
                                              double horizon) {
   if (speed <= 0.0 && accel <= 0.0) return std::nullopt;
   return EarliestRoot(Polynomial{-closable, speed, 0.5 * accel}, 0.0, horizon);
+}
+
+/// The largest speed at which a point of the body on `path` moves along any unit direction n
+/// because of its spin is |n x w| times this: the largest distance of a vertex from the spin
+/// axis through the path's centre ((w x r) . n = r . (n x w) and n x w is normal to w, so only
+/// r's part normal to w counts). Rotation about that axis keeps these distances, so one
+/// evaluation at any time serves the whole path. 0 for a body that does not spin.
+inline double SpinRadius(const ConvexPolyhedron& poly, const RigidPath& path) {
+  if (!path.Rotates()) return 0.0;
+  const Vec3 axis_B = (path.q0.conjugate() * path.omega).normalized();
+  double r2 = 0.0;
+  for (const Vec3& v : poly.vertices()) r2 = std::max(r2, (v - v.dot(axis_B) * axis_B).squaredNorm());
+  return std::sqrt(r2);
 }
 
 }  // namespace sparsedyn::narrow

@@ -52,10 +52,9 @@ WallContactPrediction PredictWallContact(const ConvexPolyhedron& polyhedron, con
     return Finish(dt ? Kind::kContact : Kind::kNone, t, nearest, 1);
   }
 
-  // Rotating: conservative advancement. A body point at distance <= r from the path's centre
-  // moves towards the wall at most at -(v . n) + |n x w| r, since (w x r) . n = r . (n x w).
-  const double radius = polyhedron.centroid().norm() + polyhedron.bounding_radius();
-  const double spin = normal.cross(path.omega).norm() * radius;
+  // Rotating: conservative advancement. A body point moves towards the wall at most at
+  // -(v . n) + |n x w| r, with r the SpinRadius (distance from the spin axis).
+  const double spin = normal.cross(path.omega).norm() * narrow::SpinRadius(polyhedron, path);
   double t = t_begin;
   for (int iteration = 0;; ++iteration) {
     if (nearest.gap <= tolerance) return Finish(Kind::kContact, t, nearest, iteration);

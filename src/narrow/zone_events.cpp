@@ -141,6 +141,7 @@ double EarliestExit(const ConvexPolyhedron& poly, FeatureId f, const Eigen::Matr
     const Polynomial g = Dot(R * vp.plane.normal, w) - Polynomial{vp.plane.offset - slack};
     if (g(0.0) < 0.0) {  // already outside by more than the slack
       best = 0.0;
+      (side_a ? next.a : next.b) = vp.neighbor;
       break;
     }
     const std::optional<double> root = EarliestRoot(g, 0.0, best);
@@ -198,6 +199,7 @@ ZoneEvent NextZoneEvent(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
     event.dt = *contact;
   } else if (exit <= 0.0) {
     event.kind = ZoneEvent::Kind::kUnsupported;
+    event.stalled = true;
   } else if (exit < horizon) {
     event.kind = ZoneEvent::Kind::kExit;
     event.dt = exit;

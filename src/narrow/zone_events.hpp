@@ -33,6 +33,8 @@ struct ZoneEvent {
   Kind kind = Kind::kUnsupported;
   double dt = 0.0;
   FeaturePair next;
+  bool stalled = false;  // kUnsupported because a witness is already over a zone plane by more
+                         // than the slack; `next` is the pair across that plane
 };
 
 /// The next zone event of the closest pair `pair` (as FindClosestFeatures reported it, with its

@@ -54,6 +54,7 @@ TEST(TimeOfContact, ParallelFacesApproachingFlushMeetAtGapOverSpeed) {
                                       5.0);
   ASSERT_EQ(p.kind, Kind::kContact);
   EXPECT_NEAR(p.time, 1.0 - kToiTolerance, kExact);
+  EXPECT_EQ(p.advancement_steps, 0) << "reduced to a vertex-face pair, solved exactly";
 }
 
 TEST(TimeOfContact, ParallelEdgesMeetAtGapOverSpeed) {
@@ -65,6 +66,7 @@ TEST(TimeOfContact, ParallelEdgesMeetAtGapOverSpeed) {
               At(Vec3(3.0, 0.0, 0.2), Vec3(-2.0, 0.0, 0.0), turn), 5.0);
   ASSERT_EQ(p.kind, Kind::kContact);
   EXPECT_NEAR(p.time, (3.0 - std::sqrt(2.0) - kToiTolerance) / 2.0, kExact);
+  EXPECT_EQ(p.advancement_steps, 0) << "reduced to a vertex-edge pair, solved exactly";
 }
 
 TEST(TimeOfContact, FallingCubeMeetsAtTheQuadraticRoot) {
@@ -162,6 +164,15 @@ TEST(TimeOfContact, TranslatingPairsMatchTheOracleExactly) {
   EXPECT_EQ(f.missed + f.late + f.mismatched + f.too_far, 0);
   EXPECT_GT(f.oracle_contacts, 600);
   EXPECT_LT(f.oracle_contacts, 1400);
+}
+
+TEST(TimeOfContact, AlignedBoxesWithParallelFacesAndEdgesMatchTheOracleExactly) {
+  const testing::ToiFigures f = testing::RunPairCheck(/*seed=*/20261105, 1000, /*spin=*/0.0,
+                                                      /*accelerate=*/false, /*aligned=*/true);
+  f.Print("aligned translating pairs");
+  EXPECT_EQ(f.missed + f.late + f.mismatched + f.too_far, 0);
+  EXPECT_GT(f.oracle_contacts, 300);
+  EXPECT_LT(f.oracle_contacts, 900);
 }
 
 TEST(TimeOfContact, RotatingPairsAreNeverLate) {

@@ -58,8 +58,10 @@ class MotionCaseGenerator {
       shapes_.push_back(MakeShape("random hull F=" + std::to_string(faces),
                                   *RandomConvexPolyhedron(faces, 700 + static_cast<unsigned>(faces))));
     }
+    aligned_first_ = shapes_.size();
     shapes_.push_back(MakeShape("cube", *MakeBox({0.5, 0.5, 0.5})));
     shapes_.push_back(MakeShape("box 3x1x1", *MakeBox({0.75, 0.25, 0.25})));
+    shapes_.push_back(MakeShape("prism 8", *MakePrism(8, 0.5, 0.4)));
     shapes_.push_back(MakeShape("slab", *MakeSlab(1.5, 200.0)));
     shapes_.push_back(MakeShape("needle", *MakeNeedle(1.5, 200.0)));
     shapes_.push_back(MakeShape("cigar", *RandomEllipsoidalPolyhedron(30, {0.4, 0.4, 1.2}, 7)));
@@ -99,6 +101,35 @@ class MotionCaseGenerator {
     return c;
   }
 
+  // Degenerate translating pairs: boxes and prisms with a common orientation, or turned about
+  // their common z axis by multiples of 45 degrees (parallel faces and parallel edges), B
+  // starting 0.5-2 away along a random axis with a lateral offset on a 1/4 grid and moving
+  // straight back along that axis, sometimes with a lateral drift on the same grid.
+  MotionCase AlignedPair() {
+    MotionCase c;
+    c.a = &shapes_[aligned_first_ + pairs_.rng()() % (shapes_.size() - aligned_first_)];
+    c.b = &shapes_[aligned_first_ + pairs_.rng()() % (shapes_.size() - aligned_first_)];
+    const Eigen::Quaterniond common = pairs_.RandomRotation();
+    auto turn = [&] {
+      return common * Eigen::Quaterniond(Eigen::AngleAxisd(
+                          M_PI / 4 * static_cast<double>(pairs_.rng()() % 8), Vec3::UnitZ()));
+    };
+    c.path_a.q0 = turn();
+    c.path_b.q0 = pairs_.rng()() % 2 ? c.path_a.q0 : turn();
+    const int axis = static_cast<int>(pairs_.rng()() % 3);
+    auto grid = [&] { return 0.25 * static_cast<double>(static_cast<int>(pairs_.rng()() % 9) - 4); };
+    Vec3 offset(grid(), grid(), grid());
+    offset[axis] = (pairs_.rng()() % 2 ? 1.0 : -1.0) *
+                   (MotionCase::Radius(*c.a) + MotionCase::Radius(*c.b) + 0.5 + 1.5 * Uniform());
+    Vec3 velocity = Vec3::Zero();
+    velocity[axis] = -offset[axis] / (1.0 + Uniform());
+    if (pairs_.rng()() % 2) velocity[(axis + 1) % 3] = grid();
+    c.path_b.centre.p0 = common * offset;
+    c.path_b.centre.v0 = common * velocity;
+    c.t_end = 3.0;
+    return c;
+  }
+
   // One polyhedron (in `a`) and the wall n.x = 0 with n = `normal`: the body starts 0.1-3 above
   // it, moving towards it (or away, for a third of the cases) at 0.5-2.5 m/s.
   MotionCase Wall(const Vec3& normal, double spin, bool accelerate) {
@@ -135,6 +166,7 @@ class MotionCaseGenerator {
 
   PairGenerator pairs_;
   std::vector<Shape> shapes_;
+  std::size_t aligned_first_ = 0;  // boxes, prisms, slab and needle: the aligned pairs' shapes
 };
 
 }  // namespace sparsedyn::testing

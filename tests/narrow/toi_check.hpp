@@ -19,8 +19,10 @@ namespace sparsedyn::testing {
 
 // Contact tolerance of the random cases (their polyhedra have radii 0.1-1.5 m).
 inline constexpr double kToiTolerance = 1e-4;
-// Translating predictions are exact: allowed time error (s) for cases that last ~1-20 s.
-inline constexpr double kToiTimeError = 1e-9;
+// Translating predictions are exact: allowed time error (s) for cases that last ~1-20 s at
+// speeds ~1 m/s (issue's bound: 1e-9 x the scene scale; measured: 2.3e-12 s on aligned boxes,
+// 6e-15 s on random pairs).
+inline constexpr double kToiTimeError = 1e-10;
 // The oracle's smallest sampling step as a fraction of the case's duration.
 inline constexpr double kOracleMinStep = 2e-6;
 
@@ -120,7 +122,9 @@ inline void CheckAgainstOracle(const MotionCase& c, ContactPrediction::Kind kind
 }
 
 // `spin` = 0: translating pairs (exact); otherwise rotating pairs (never late).
-inline ToiFigures RunPairCheck(std::uint64_t seed, int count, double spin, bool accelerate) {
+// `aligned`: the degenerate AlignedPair cases (translating) instead of random ones.
+inline ToiFigures RunPairCheck(std::uint64_t seed, int count, double spin, bool accelerate,
+                               bool aligned = false) {
   MotionCaseGenerator generator(seed);
   ToiFigures f;
   ContactPredictionOptions options;
@@ -128,7 +132,7 @@ inline ToiFigures RunPairCheck(std::uint64_t seed, int count, double spin, bool 
   const bool exact = spin == 0.0;
   const double level = exact ? kToiTolerance : options.advancement_target * kToiTolerance;
   for (int trial = 0; trial < count; ++trial) {
-    const MotionCase c = generator.Pair(spin, accelerate);
+    const MotionCase c = aligned ? generator.AlignedPair() : generator.Pair(spin, accelerate);
     SCOPED_TRACE("seed " + std::to_string(seed) + " trial " + std::to_string(trial) + ": " +
                  c.Describe());
     const Resumed r = PredictResuming(c, options);
