@@ -33,7 +33,8 @@ inline double SpinRadius(const ConvexPolyhedron& poly, const RigidPath& path) {
   if (!path.Rotates()) return 0.0;
   const Vec3 axis_B = (path.q0.conjugate() * path.omega).normalized();
   double r2 = 0.0;
-  for (const Vec3& v : poly.vertices()) r2 = std::max(r2, (v - v.dot(axis_B) * axis_B).squaredNorm());
+  for (const Vec3& v : poly.vertices())
+    r2 = std::max(r2, (v - v.dot(axis_B) * axis_B).squaredNorm());
   return std::sqrt(r2);
 }
 

@@ -60,8 +60,7 @@ std::optional<double> PairAdvancement(const ConvexPolyhedron& pa, const RigidPat
   const std::optional<double> lipschitz = narrow::AdvancementStep(
       cf.distance - target, dv.norm() + path_a.omega.norm() * r_a + path_b.omega.norm() * r_b,
       da.norm(), horizon);
-  const double slab =
-      SeparationAlong(pa, path_a.PoseAt(t), pb, path_b.PoseAt(t), n) - target;
+  const double slab = SeparationAlong(pa, path_a.PoseAt(t), pb, path_b.PoseAt(t), n) - target;
   if (!lipschitz || slab <= 0.0) return lipschitz;
   const std::optional<double> along_n = narrow::AdvancementStep(
       slab, dv.dot(n) + n.cross(path_a.omega).norm() * r_a + n.cross(path_b.omega).norm() * r_b,
@@ -92,8 +91,13 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
   std::optional<FeaturePair> start = warm;
   while (true) {
     out.time = t;
-    out.features = FindClosestFeatures(a, path_a.PoseAt(t), b, path_b.PoseAt(t), start,
-                                       options.walk);
+    out.features =
+        FindClosestFeatures(a, path_a.PoseAt(t), b, path_b.PoseAt(t), start, options.walk);
+    // A warm walk that hit its cap holds no answer: start over cold.
+    if (out.features.status == ClosestFeatures::Status::kIterationCap) {
+      out.features =
+          FindClosestFeatures(a, path_a.PoseAt(t), b, path_b.PoseAt(t), std::nullopt, options.walk);
+    }
     start = out.features.features;
     const double accepted = contact_predicted ? tol + kContactRoundOff * scale : tol;
     if (out.features.distance <= accepted) {

@@ -131,8 +131,7 @@ std::optional<Witnesses> BuildWitnesses(const ConvexPolyhedron& a, const ConvexP
 // planes map into A's frame by x -> R x (+ shift, already folded into w); `next` gets the pair
 // across the plane (the neighbour replaces the feature on this side). Returns limit if none.
 double EarliestExit(const ConvexPolyhedron& poly, FeatureId f, const Eigen::Matrix3d& R,
-                    const PolyVec3& w, double slack, double limit, bool side_a,
-                    FeaturePair& next) {
+                    const PolyVec3& w, double slack, double limit, bool side_a, FeaturePair& next) {
   double best = limit;
   for (const VoronoiPlane& vp : poly.VoronoiPlanes(f)) {
     // A face's own plane bounds the zone towards the interior: crossing it is contact, which
@@ -156,16 +155,13 @@ double EarliestExit(const ConvexPolyhedron& poly, FeatureId f, const Eigen::Matr
 }  // namespace
 
 ZoneEvent NextZoneEvent(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
-                        const RelativeTranslation& motion, FeaturePair pair,
-                        const Vec3& point_a_A, const Vec3& point_b_A, double tolerance,
-                        double horizon, double slack) {
+                        const RelativeTranslation& motion, FeaturePair pair, const Vec3& point_a_A,
+                        const Vec3& point_b_A, double tolerance, double horizon, double slack) {
   ZoneEvent event;
   // Pairs of a face with a face or edge, and parallel edges, are reduced to where the walk put
   // the witnesses.
-  const bool has_face =
-      pair.a.type == FeatureType::kFace || pair.b.type == FeatureType::kFace;
-  const bool has_edge =
-      pair.a.type == FeatureType::kEdge || pair.b.type == FeatureType::kEdge;
+  const bool has_face = pair.a.type == FeatureType::kFace || pair.b.type == FeatureType::kFace;
+  const bool has_edge = pair.a.type == FeatureType::kEdge || pair.b.type == FeatureType::kEdge;
   const bool both_faces = pair.a.type == FeatureType::kFace && pair.b.type == FeatureType::kFace;
   if ((has_face && has_edge) || both_faces ||
       (pair.a.type == FeatureType::kEdge && pair.b.type == FeatureType::kEdge &&

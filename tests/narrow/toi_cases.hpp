@@ -36,8 +36,8 @@ struct MotionCase {
     out.precision(17);
     auto path = [&](const RigidPath& p) {
       out << "{p0 = (" << p.centre.p0.transpose() << "), v0 = (" << p.centre.v0.transpose()
-          << "), a = (" << p.centre.a.transpose() << "), t0 = " << p.t0() << ", q0 = ("
-          << p.q0.w() << " " << p.q0.x() << " " << p.q0.y() << " " << p.q0.z() << "), omega = ("
+          << "), a = (" << p.centre.a.transpose() << "), t0 = " << p.t0() << ", q0 = (" << p.q0.w()
+          << " " << p.q0.x() << " " << p.q0.y() << " " << p.q0.z() << "), omega = ("
           << p.omega.transpose() << ")}";
     };
     out << a->name << " on ";
@@ -55,8 +55,9 @@ class MotionCaseGenerator {
  public:
   explicit MotionCaseGenerator(std::uint64_t seed) : pairs_(seed) {
     for (const int faces : {4, 6, 9, 14, 20, 32, 48, 80, 120}) {
-      shapes_.push_back(MakeShape("random hull F=" + std::to_string(faces),
-                                  *RandomConvexPolyhedron(faces, 700 + static_cast<unsigned>(faces))));
+      shapes_.push_back(
+          MakeShape("random hull F=" + std::to_string(faces),
+                    *RandomConvexPolyhedron(faces, 700 + static_cast<unsigned>(faces))));
     }
     aligned_first_ = shapes_.size();
     shapes_.push_back(MakeShape("cube", *MakeBox({0.5, 0.5, 0.5})));
@@ -93,7 +94,8 @@ class MotionCaseGenerator {
                          (c.t_begin - t0) * c.path_b.centre.v0;
     if (accelerate && Uniform() < 0.5) {
       c.path_a.centre.a = pairs_.RandomUnit() * Uniform();
-      c.path_b.centre.a = Uniform() < 0.3 ? c.path_a.centre.a : Vec3(pairs_.RandomUnit() * 2.0 * Uniform());
+      c.path_b.centre.a =
+          Uniform() < 0.3 ? c.path_a.centre.a : Vec3(pairs_.RandomUnit() * 2.0 * Uniform());
       c.path_b.centre.p0 -= 0.5 * (c.t_begin - t0) * (c.t_begin - t0) * c.path_b.centre.a -
                             0.5 * (c.t_begin - t0) * (c.t_begin - t0) * c.path_a.centre.a;
     }
@@ -117,7 +119,9 @@ class MotionCaseGenerator {
     c.path_a.q0 = turn();
     c.path_b.q0 = pairs_.rng()() % 2 ? c.path_a.q0 : turn();
     const int axis = static_cast<int>(pairs_.rng()() % 3);
-    auto grid = [&] { return 0.25 * static_cast<double>(static_cast<int>(pairs_.rng()() % 9) - 4); };
+    auto grid = [&] {
+      return 0.25 * static_cast<double>(static_cast<int>(pairs_.rng()() % 9) - 4);
+    };
     Vec3 offset(grid(), grid(), grid());
     offset[axis] = (pairs_.rng()() % 2 ? 1.0 : -1.0) *
                    (MotionCase::Radius(*c.a) + MotionCase::Radius(*c.b) + 0.5 + 1.5 * Uniform());

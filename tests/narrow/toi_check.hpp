@@ -29,12 +29,15 @@ inline constexpr double kOracleMinStep = 2e-6;
 struct ToiFigures {
   int cases = 0, contacts = 0, oracle_contacts = 0;
   int missed = 0, late = 0, mismatched = 0, too_far = 0;
-  double max_time_error = 0.0;         // translating: |predicted - oracle|
-  double max_contact_distance = 0.0;   // largest distance at a returned contact / tolerance
+  double max_time_error = 0.0;        // translating: |predicted - oracle|
+  double max_contact_distance = 0.0;  // largest distance at a returned contact / tolerance
   long iterations = 0;
   int max_iterations = 0, checkpoints = 0, advancement_steps = 0;
   long oracle_samples = 0;
 
+  // Cases that break a guarantee: missed, late, too far at contact, and (exact predictions
+  // only) a time off the oracle's.
+  int Errors(bool exact) const { return missed + late + too_far + (exact ? mismatched : 0); }
   double MeanIterations() const { return cases ? static_cast<double>(iterations) / cases : 0.0; }
   void Print(const char* what) const {
     std::printf(
@@ -47,6 +50,12 @@ struct ToiFigures {
   }
 };
 
+// Prints the figures (the log line the docs quote) and fails on any broken guarantee.
+inline void ExpectNoErrors(const ToiFigures& f, const char* what, bool exact) {
+  f.Print(what);
+  EXPECT_EQ(f.Errors(exact), 0) << what;
+}
+
 // The prediction resumed after each checkpoint, as the World's detail events do.
 struct Resumed {
   ContactPrediction last;
@@ -57,8 +66,8 @@ inline Resumed PredictResuming(const MotionCase& c, const ContactPredictionOptio
   double t = c.t_begin;
   std::optional<FeaturePair> warm;
   for (int call = 0; call < 10000; ++call) {
-    r.last = PredictContact(*c.a->tracked, c.path_a, *c.b->tracked, c.path_b, t, c.t_end, warm,
-                            options);
+    r.last =
+        PredictContact(*c.a->tracked, c.path_a, *c.b->tracked, c.path_b, t, c.t_end, warm, options);
     r.iterations += r.last.iterations;
     r.advancement_steps += r.last.advancement_steps;
     if (r.last.kind != ContactPrediction::Kind::kCheckpoint) break;
@@ -79,8 +88,8 @@ inline double ColdDistance(const MotionCase& c, double t) {
 inline void CheckAgainstOracle(const MotionCase& c, ContactPrediction::Kind kind, double time,
                                double distance_at_time, int iterations, bool exact, double level,
                                const std::function<double(double)>& distance, ToiFigures& f) {
-  const SampledFirstTime oracle = FirstTimeBelow(distance, c.Lipschitz(), level, c.t_begin,
-                                                 c.t_end, kOracleMinStep * (c.t_end - c.t_begin));
+  const SampledFirstTime oracle = FirstTimeBelow(distance, c.Lipschitz(), level, c.t_begin, c.t_end,
+                                                 kOracleMinStep * (c.t_end - c.t_begin));
   ++f.cases;
   f.oracle_samples += oracle.samples;
   f.iterations += iterations;
@@ -138,8 +147,9 @@ inline ToiFigures RunPairCheck(std::uint64_t seed, int count, double spin, bool 
     const Resumed r = PredictResuming(c, options);
     f.checkpoints += r.checkpoints;
     f.advancement_steps += r.advancement_steps;
-    CheckAgainstOracle(c, r.last.kind, r.last.time, ColdDistance(c, r.last.time), r.iterations,
-                       exact, level, [&](double t) { return ColdDistance(c, t); }, f);
+    CheckAgainstOracle(
+        c, r.last.kind, r.last.time, ColdDistance(c, r.last.time), r.iterations, exact, level,
+        [&](double t) { return ColdDistance(c, t); }, f);
   }
   return f;
 }
@@ -154,9 +164,8 @@ inline ToiFigures RunWallCheck(std::uint64_t seed, int count, double spin, bool 
     const Vec3 normal = generator.random().RandomUnit();
     const MotionCase c = generator.Wall(normal, spin, accelerate);
     SCOPED_TRACE("seed " + std::to_string(seed) + " trial " + std::to_string(trial) +
-                 ": wall normal (" + std::to_string(normal.x()) + " " +
-                 std::to_string(normal.y()) + " " + std::to_string(normal.z()) + "), " +
-                 c.Describe());
+                 ": wall normal (" + std::to_string(normal.x()) + " " + std::to_string(normal.y()) +
+                 " " + std::to_string(normal.z()) + "), " + c.Describe());
     auto distance = [&](double t) {
       const Pose X = c.path_a.PoseAt(t);
       double d = std::numeric_limits<double>::infinity();
