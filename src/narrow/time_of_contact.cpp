@@ -8,6 +8,7 @@
 #include "narrow/advancement.hpp"
 #include "narrow/pair_frame.hpp"
 #include "narrow/zone_events.hpp"
+#include "sparsedyn/assert.hpp"
 
 namespace sparsedyn {
 namespace {
@@ -78,6 +79,11 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
   const ConvexPolyhedron& pa = a.polyhedron();
   const ConvexPolyhedron& pb = b.polyhedron();
   const double scale = std::max(pa.scale(), pb.scale());
+  SPARSEDYN_ASSERT(std::isfinite(t_begin) && std::isfinite(t_end) && t_begin <= t_end,
+                   "PredictContact needs a finite interval [t_begin, t_end]");
+  SPARSEDYN_ASSERT(options.tolerance > 0.0, "PredictContact needs a tolerance > 0");
+  SPARSEDYN_ASSERT(options.advancement_target > 0.0 && options.advancement_target < 1.0,
+                   "advancement_target must lie in (0, 1)");
   const double tol = options.tolerance;
   const bool translating = !path_a.Rotates() && !path_b.Rotates();
   // Rotating pairs step towards a gap below the tolerance so that they reach it in few steps.

@@ -47,6 +47,8 @@ struct ContactPredictionOptions {
 /// Translating pairs (neither rotates; accelerations may differ): exact up to round-off, by
 /// zone events. Otherwise: conservative advancement, never later than the true time.
 /// Within the tolerance (or penetrating) at t_begin: kContact at t_begin, 0 iterations.
+/// Preconditions (asserted): t_begin <= t_end, both finite; tolerance > 0; the polyhedra's frame
+/// origins are the points their paths move (the centres of mass when Recentered()).
 /// Method, guarantees and measured iteration counts: docs/narrow-phase.md#predicting-contact.
 ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& path_a,
                                  const TrackedPolyhedron& b, const RigidPath& path_b,

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // PredictWallContact (header narrow/time_of_contact.hpp): a polyhedron against a static plane.
 #include <algorithm>
+#include <cmath>
 
 #include "math/roots.hpp"
 #include "narrow/advancement.hpp"
 #include "narrow/time_of_contact.hpp"
+#include "sparsedyn/assert.hpp"
 
 namespace sparsedyn {
 namespace {
@@ -36,6 +38,9 @@ WallContactPrediction Finish(ContactPrediction::Kind kind, double t, Nearest nea
 WallContactPrediction PredictWallContact(const ConvexPolyhedron& polyhedron, const RigidPath& path,
                                          const Vec3& normal, double offset, double t_begin,
                                          double t_end, double tolerance, int max_iterations) {
+  SPARSEDYN_ASSERT(std::isfinite(t_begin) && std::isfinite(t_end) && t_begin <= t_end,
+                   "PredictWallContact needs a finite interval [t_begin, t_end]");
+  SPARSEDYN_ASSERT(tolerance > 0.0, "PredictWallContact needs a tolerance > 0");
   using Kind = ContactPrediction::Kind;
   Nearest nearest = NearestVertex(polyhedron, path.PoseAt(t_begin), normal, offset);
   if (nearest.gap <= tolerance) return Finish(Kind::kContact, t_begin, nearest, 0);
