@@ -45,11 +45,12 @@ double SeparationAlong(const ConvexPolyhedron& pa, const Pose& X_WA, const Conve
   return n_A.dot(frame.ToA(pb.vertex(pb.SupportVertex(-n_B)))) - top_a;
 }
 
-// One conservative-advancement step; both bounds below are valid, so the longer step is too.
+// One conservative-advancement step; every bound below is valid, so the longest step is too.
 // (1) The separating slab along the walk's normal n (A to B): A's points move towards +n at
 // most at v_A . n + |n x w_A| r_A (r_A its SpinRadius), B's towards -n likewise, and the
-// accelerations add (a_A - a_B) . n per second. (2) The distance itself changes at most at
-// |v_B - v_A| + |w_A| r_A + |w_B| r_B, plus |a_B - a_A| per second.
+// accelerations add (a_A - a_B) . n per second. (2) The same with the spin part bounded by
+// SpinRateAlong (support extent now, growing with the turn). (3) The distance itself changes at
+// most at |v_B - v_A| + |w_A| r_A + |w_B| r_B, plus |a_B - a_A| per second.
 std::optional<double> PairAdvancement(const ConvexPolyhedron& pa, const RigidPath& path_a,
                                       double r_a, const ConvexPolyhedron& pb,
                                       const RigidPath& path_b, double r_b,
@@ -61,13 +62,20 @@ std::optional<double> PairAdvancement(const ConvexPolyhedron& pa, const RigidPat
   const std::optional<double> lipschitz = narrow::AdvancementStep(
       cf.distance - target, dv.norm() + path_a.omega.norm() * r_a + path_b.omega.norm() * r_b,
       da.norm(), horizon);
-  const double slab = SeparationAlong(pa, path_a.PoseAt(t), pb, path_b.PoseAt(t), n) - target;
+  const Pose X_WA = path_a.PoseAt(t), X_WB = path_b.PoseAt(t);
+  const double slab = SeparationAlong(pa, X_WA, pb, X_WB, n) - target;
   if (!lipschitz || slab <= 0.0) return lipschitz;
-  const std::optional<double> along_n = narrow::AdvancementStep(
+  const std::optional<double> plain = narrow::AdvancementStep(
       slab, dv.dot(n) + n.cross(path_a.omega).norm() * r_a + n.cross(path_b.omega).norm() * r_b,
       da.dot(n), horizon);
-  if (!along_n) return std::nullopt;
-  return std::max(*along_n, *lipschitz);
+  if (!plain) return std::nullopt;
+  const narrow::SpinRate spin_a = narrow::SpinRateAlong(pa, X_WA, path_a.omega, n, r_a);
+  const narrow::SpinRate spin_b = narrow::SpinRateAlong(pb, X_WB, path_b.omega, -n, r_b);
+  const std::optional<double> turning =
+      narrow::AdvancementStep(slab, dv.dot(n) + spin_a.now + spin_b.now,
+                              da.dot(n) + spin_a.growth + spin_b.growth, horizon);
+  if (!turning) return std::nullopt;
+  return std::max({*plain, *turning, *lipschitz});
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include "narrow/zone_events.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "math/roots.hpp"
@@ -127,6 +128,16 @@ std::optional<Witnesses> BuildWitnesses(const ConvexPolyhedron& a, const ConvexP
   return w;
 }
 
+// True when p (degree <= 2) certainly stays positive on [0, limit]: its constant term beats
+// every term that could pull it down, with a margin for the rounding of this very test. Saves
+// the certified root isolation for the many zone planes that the witness is nowhere near.
+bool StaysPositive(const Polynomial& p, double limit) {
+  const double c0 = p.Coefficient(0), c1 = p.Coefficient(1) * limit,
+               c2 = p.Coefficient(2) * limit * limit;
+  const double low = c0 + std::min(c1, 0.0) + std::min(c2, 0.0);
+  return p.Degree() <= 2 && low > 1e-12 * (std::abs(c0) + std::abs(c1) + std::abs(c2));
+}
+
 // The earliest dt in [0, limit) at which witness w leaves the zone of feature f of `poly`, whose
 // planes map into A's frame by x -> R x (+ shift, already folded into w); `next` gets the pair
 // across the plane (the neighbour replaces the feature on this side). Returns limit if none.
@@ -143,6 +154,7 @@ double EarliestExit(const ConvexPolyhedron& poly, FeatureId f, const Eigen::Matr
       (side_a ? next.a : next.b) = vp.neighbor;
       break;
     }
+    if (StaysPositive(g, best)) continue;
     const std::optional<double> root = EarliestRoot(g, 0.0, best);
     if (root && *root < best) {
       best = *root;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <limits>
 
@@ -34,6 +35,7 @@ struct ToiFigures {
   long iterations = 0;
   int max_iterations = 0, checkpoints = 0, advancement_steps = 0;
   long oracle_samples = 0;
+  double prediction_seconds = 0.0;  // CPU time in the predictions (printed, never asserted)
 
   // Cases that break a guarantee: missed, late, too far at contact, and (exact predictions
   // only) a time off the oracle's.
@@ -43,10 +45,11 @@ struct ToiFigures {
     std::printf(
         "[toi] %s: %d cases, %d contacts (oracle %d), missed %d, late %d, mismatched %d, "
         "max time error %.3g s, max distance at contact %.6g tol, iterations mean %.2f max %d, "
-        "checkpoints %d, fallback advancement steps %d, oracle samples %ld\n",
+        "checkpoints %d, fallback advancement steps %d, oracle samples %ld, %.2f us per "
+        "prediction\n",
         what, cases, contacts, oracle_contacts, missed, late, mismatched, max_time_error,
         max_contact_distance, MeanIterations(), max_iterations, checkpoints, advancement_steps,
-        oracle_samples);
+        oracle_samples, cases ? 1e6 * prediction_seconds / cases : 0.0);
   }
 };
 
@@ -144,7 +147,10 @@ inline ToiFigures RunPairCheck(std::uint64_t seed, int count, double spin, bool 
     const MotionCase c = aligned ? generator.AlignedPair() : generator.Pair(spin, accelerate);
     SCOPED_TRACE("seed " + std::to_string(seed) + " trial " + std::to_string(trial) + ": " +
                  c.Describe());
+    const auto start = std::chrono::steady_clock::now();
     const Resumed r = PredictResuming(c, options);
+    f.prediction_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     f.checkpoints += r.checkpoints;
     f.advancement_steps += r.advancement_steps;
     CheckAgainstOracle(
