@@ -58,17 +58,25 @@ WallContactPrediction PredictWallContact(const ConvexPolyhedron& polyhedron, con
   }
 
   // Rotating: conservative advancement. A body point moves towards the wall at most at
-  // -(v . n) + |n x w| r, with r the SpinRadius (distance from the spin axis).
-  const double spin = normal.cross(path.omega).norm() * narrow::SpinRadius(polyhedron, path);
+  // -(v . n) + |n x w| r, with r the SpinRadius (distance from the spin axis), or at the
+  // SpinRateAlong(-n) bound; both are valid, so the longer step is taken.
+  const double spin_radius = narrow::SpinRadius(polyhedron, path);
+  const double spin = normal.cross(path.omega).norm() * spin_radius;
   double t = t_begin;
   for (int iteration = 0;; ++iteration) {
     if (nearest.gap <= tolerance) return Finish(Kind::kContact, t, nearest, iteration);
     if (t >= t_end) return Finish(Kind::kNone, t, nearest, iteration);
     if (iteration >= max_iterations) return Finish(Kind::kCheckpoint, t, nearest, iteration);
-    const std::optional<double> dt = narrow::AdvancementStep(
-        nearest.gap - kWallAdvancementTarget * tolerance,
-        spin - normal.dot(path.centre.VelocityAt(t)), -normal.dot(path.centre.a), t_end - t);
-    t = dt ? std::min(t + *dt, t_end) : t_end;
+    const double closable = nearest.gap - kWallAdvancementTarget * tolerance;
+    const double speed = -normal.dot(path.centre.VelocityAt(t));
+    const double accel = -normal.dot(path.centre.a);
+    const std::optional<double> plain =
+        narrow::AdvancementStep(closable, speed + spin, accel, t_end - t);
+    const narrow::SpinRate rate =
+        narrow::SpinRateAlong(polyhedron, path.PoseAt(t), path.omega, -normal, spin_radius);
+    const std::optional<double> turning =
+        narrow::AdvancementStep(closable, speed + rate.now, accel + rate.growth, t_end - t);
+    t = plain && turning ? std::min(t + std::max(*plain, *turning), t_end) : t_end;
     nearest = NearestVertex(polyhedron, path.PoseAt(t), normal, offset);
   }
 }

@@ -182,12 +182,15 @@ inline ToiFigures RunWallCheck(std::uint64_t seed, int count, double spin, bool 
     WallContactPrediction p;
     int iterations = 0, calls = 0;
     double t = c.t_begin;
+    const auto start = std::chrono::steady_clock::now();
     do {
       p = PredictWallContact(poly, c.path_a, normal, 0.0, t, c.t_end, kToiTolerance);
       iterations += p.iterations;
       t = p.time;
       f.checkpoints += p.kind == ContactPrediction::Kind::kCheckpoint;
     } while (p.kind == ContactPrediction::Kind::kCheckpoint && ++calls < 10000);
+    f.prediction_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_NEAR(p.gap, distance(p.time), 1e-12) << "the reported gap is the nearest vertex's";
     CheckAgainstOracle(c, p.kind, p.time, distance(p.time), iterations, exact, level, distance, f);
   }
