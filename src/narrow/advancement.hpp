@@ -14,6 +14,10 @@
 
 namespace sparsedyn::narrow {
 
+/// The longest horizon the predictions search (s): EarliestRoot needs a finite interval, and an
+/// open-ended one (t_end = infinity) is searched this far, then reported as kNone at infinity.
+inline constexpr double kMaxHorizon = 1e30;
+
 /// The first dt in [0, horizon] at which a gap closing at most at speed + accel * dt (so by at
 /// most speed dt + accel dt^2 / 2 in total) may have closed by `closable` (> 0). Before that
 /// time the gap certainly has not. std::nullopt when it cannot close within the horizon (e.g.

@@ -78,6 +78,14 @@ std::optional<double> PairAdvancement(const ConvexPolyhedron& pa, const RigidPat
   return std::max({*plain, *turning, *lipschitz});
 }
 
+// No contact ever (t_end = infinity and none within kMaxHorizon): kNone at t_end, with the
+// features of the last time evaluated.
+ContactPrediction NoneForever(ContactPrediction out, double t_end) {
+  out.kind = ContactPrediction::Kind::kNone;
+  out.time = t_end;
+  return out;
+}
+
 }  // namespace
 
 ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& path_a,
@@ -87,8 +95,8 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
   const ConvexPolyhedron& pa = a.polyhedron();
   const ConvexPolyhedron& pb = b.polyhedron();
   const double scale = std::max(pa.scale(), pb.scale());
-  SPARSEDYN_ASSERT(std::isfinite(t_begin) && std::isfinite(t_end) && t_begin <= t_end,
-                   "PredictContact needs a finite interval [t_begin, t_end]");
+  SPARSEDYN_ASSERT(std::isfinite(t_begin) && t_begin <= t_end,
+                   "PredictContact needs t_begin finite and <= t_end");
   SPARSEDYN_ASSERT(options.tolerance > 0.0, "PredictContact needs a tolerance > 0");
   SPARSEDYN_ASSERT(options.advancement_target > 0.0 && options.advancement_target < 1.0,
                    "advancement_target must lie in (0, 1)");
@@ -128,7 +136,7 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
     }
     ++out.iterations;
     contact_predicted = false;
-    const double horizon = t_end - t;
+    const double horizon = std::min(t_end - t, narrow::kMaxHorizon);
 
     // Translating: the next zone event of the current pair, exact up to round-off.
     if (translating) {
@@ -153,6 +161,7 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
       if (event.kind != narrow::ZoneEvent::Kind::kUnsupported && !stalled) {
         contact_predicted = event.kind == narrow::ZoneEvent::Kind::kContact;
         if (event.kind == narrow::ZoneEvent::Kind::kExit) start = event.next;
+        if (!std::isfinite(next_t)) return NoneForever(out, t_end);
         t = next_t;
         continue;
       }
@@ -163,6 +172,7 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
     const std::optional<double> step =
         PairAdvancement(pa, path_a, r_a, pb, path_b, r_b, out.features, t, target, horizon);
     t = step ? std::min(t + *step, t_end) : t_end;
+    if (!std::isfinite(t)) return NoneForever(out, t_end);
   }
 }
 

@@ -20,7 +20,7 @@ struct ContactPrediction {
                   // round-off of 1e-12 x scale), and `time` is never later than the first time
                   // the distance reaches the tolerance (translating pairs: it is that time, to
                   // round-off) or advancement_target x tolerance (rotating pairs)
-    kNone,        // the distance stays > tolerance until t_end
+    kNone,        // the distance stays > tolerance until t_end (which may be infinity)
     kCheckpoint,  // the work cap was reached at `time` < t_end with distance > tolerance:
                   // predict again from there (a detail event that only resumes the prediction)
   };
@@ -47,7 +47,9 @@ struct ContactPredictionOptions {
 /// Translating pairs (neither rotates; accelerations may differ): exact up to round-off, by
 /// zone events. Otherwise: conservative advancement, never later than the true time.
 /// Within the tolerance (or penetrating) at t_begin: kContact at t_begin, 0 iterations.
-/// Preconditions (asserted): t_begin <= t_end, both finite; tolerance > 0; the polyhedra's frame
+/// Preconditions (asserted): t_begin finite and <= t_end; tolerance > 0. t_end may be infinity
+/// (e.g. element spheres that never separate): it is searched up to 1e30 s ahead, and kNone then
+/// carries time = infinity and the features of the last time evaluated. The polyhedra's frame
 /// origins are the points their paths move (the centres of mass when Recentered()).
 /// Method, guarantees and measured iteration counts: docs/narrow-phase.md#predicting-contact.
 ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& path_a,
@@ -68,7 +70,8 @@ struct WallContactPrediction {
 /// of the plane {x : normal.x = offset}. Exact for a non-rotating body (a root of the nearest
 /// vertex's polynomial), conservative advancement for a rotating one (never later than the
 /// first time the gap is tolerance / 2, with gap <= tolerance at the returned time). The
-/// polyhedron's frame origin is the point `path` moves (as for PredictContact).
+/// polyhedron's frame origin is the point `path` moves; t_end may be infinity (as for
+/// PredictContact; kNone then reports the last gap evaluated).
 WallContactPrediction PredictWallContact(const ConvexPolyhedron& polyhedron, const RigidPath& path,
                                          const Vec3& normal, double offset, double t_begin,
                                          double t_end, double tolerance, int max_iterations = 64);

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <string>
 
 #include "toi_check.hpp"
 
@@ -132,6 +134,33 @@ TEST(TimeOfContact, ZeroRelativeVelocityOrSeparatingIsNone) {
   const ContactPrediction apart = Predict(s.cube, At(Vec3::Zero()), s.cube, b, 10.0);
   EXPECT_EQ(apart.kind, Kind::kNone);
   EXPECT_EQ(apart.iterations, 1);
+}
+
+TEST(TimeOfContact, AnOpenEndedIntervalFindsContactOrReportsNoneAtInfinity) {
+  Cubes s;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const double spin : {0.0, 2.0}) {
+    for (const double speed : {-1.0, 1.0}) {  // approaching, separating
+      RigidPath b = At(Vec3(3.0, 0.2, 0.0), Vec3(speed, 0.0, 0.0));
+      b.omega = Vec3(0.0, 0.0, spin);
+      const ContactPrediction p = PredictContact(*s.cube.tracked, At(Vec3::Zero()), *s.cube.tracked,
+                                                 b, 0.0, inf, std::nullopt, Options());
+      SCOPED_TRACE("spin " + std::to_string(spin) + " speed " + std::to_string(speed));
+      if (speed < 0) {
+        EXPECT_EQ(p.kind, Kind::kContact);
+        EXPECT_LE(p.time, 2.0 - kToiTolerance + kExact);
+        EXPECT_GT(p.time, 1.0);
+      } else {
+        EXPECT_EQ(p.kind, Kind::kNone);
+        EXPECT_EQ(p.time, inf);
+      }
+      // The wall x = -1, allowed side x >= -1: approached when speed < 0.
+      const WallContactPrediction w =
+          PredictWallContact(*s.cube.polyhedron, b, Vec3::UnitX(), -1.0, 0.0, inf, kToiTolerance);
+      EXPECT_EQ(w.kind, speed < 0 ? Kind::kContact : Kind::kNone);
+      EXPECT_EQ(w.time == inf, speed > 0);
+    }
+  }
 }
 
 TEST(TimeOfContact, CheckpointsResumeToTheSameAnswer) {
