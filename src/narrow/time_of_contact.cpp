@@ -7,6 +7,7 @@
 
 #include "narrow/advancement.hpp"
 #include "narrow/pair_frame.hpp"
+#include "narrow/tolerance_crossing.hpp"
 #include "narrow/zone_events.hpp"
 #include "sparsedyn/assert.hpp"
 
@@ -86,29 +87,14 @@ ContactPrediction NoneForever(ContactPrediction out, double t_end) {
   return out;
 }
 
-// The time in (apart, within] at which a translating pair's distance crosses the tolerance
-// (distance > tol at `apart`, < tol at `within`; convex in between, so one crossing), by
-// bisection to adjacent doubles; `out` holds the walk at `within` and gets the answer.
-ContactPrediction BisectCrossing(const TrackedPolyhedron& a, const RigidPath& path_a,
-                                 const TrackedPolyhedron& b, const RigidPath& path_b, double apart,
-                                 double within, double tol, const ClosestFeaturesOptions& walk,
-                                 ContactPrediction out) {
-  ClosestFeatures at_within = out.features;
-  while (true) {
-    const double mid = apart + 0.5 * (within - apart);
-    if (mid <= apart || mid >= within) break;
-    const ClosestFeatures f =
-        FindClosestFeatures(a, path_a.PoseAt(mid), b, path_b.PoseAt(mid), at_within.features, walk);
-    if (f.distance <= tol) {
-      within = mid;
-      at_within = f;
-    } else {
-      apart = mid;
-    }
-  }
+// kContact at `t` with the walk's features there.
+ContactPrediction ContactAt(const TrackedPolyhedron& a, const RigidPath& path_a,
+                            const TrackedPolyhedron& b, const RigidPath& path_b, double t,
+                            const ClosestFeaturesOptions& walk, ContactPrediction out) {
   out.kind = ContactPrediction::Kind::kContact;
-  out.time = within;
-  out.features = at_within;
+  out.time = t;
+  out.features =
+      FindClosestFeatures(a, path_a.PoseAt(t), b, path_b.PoseAt(t), out.features.features, walk);
   return out;
 }
 
@@ -148,16 +134,33 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
           FindClosestFeatures(a, path_a.PoseAt(t), b, path_b.PoseAt(t), std::nullopt, options.walk);
     }
     start = out.features.features;
+    const FeaturePair seen = out.features.features;
+    auto distance = [&](double time) {
+      return FindClosestFeatures(a, path_a.PoseAt(time), b, path_b.PoseAt(time), seen, options.walk)
+          .distance;
+    };
     // A translating pair's distance is convex in time, so if a zone event jumped past the
     // contact (a pair that was not quite closest, e.g. among parallel features), the first
     // time within the tolerance is the one crossing between the last time seen apart and now.
     if (translating && out.features.distance < tol - kContactRoundOff * scale && t > apart_at) {
-      return BisectCrossing(a, path_a, b, path_b, apart_at, t, tol, options.walk, out);
+      const double first = narrow::BisectFirstWithin(distance, apart_at, t, tol);
+      return ContactAt(a, path_a, b, path_b, first, options.walk, out);
     }
-    const double accepted = contact_predicted ? tol + kContactRoundOff * scale : tol;
-    if (out.features.distance <= accepted) {
+    if (out.features.distance <= tol) {
       out.kind = ContactPrediction::Kind::kContact;
       return out;
+    }
+    // The gap's root left the walk's distance a hair above the tolerance: step onto the first
+    // time the walk agrees (or past a distance that only grazed the tolerance).
+    if (contact_predicted && out.features.distance <= tol + kContactRoundOff * scale) {
+      const narrow::LevelCrossing crossing =
+          narrow::StepIntoLevel(distance, t, out.features.distance, tol, t_end);
+      if (crossing.time) return ContactAt(a, path_a, b, path_b, *crossing.time, options.walk, out);
+      if (crossing.apart > t) {
+        t = crossing.apart;
+        contact_predicted = false;
+        continue;
+      }
     }
     apart_at = t;
     if (t >= t_end) {

@@ -6,6 +6,7 @@
 #include "math/roots.hpp"
 #include "narrow/advancement.hpp"
 #include "narrow/time_of_contact.hpp"
+#include "narrow/tolerance_crossing.hpp"
 #include "sparsedyn/assert.hpp"
 
 namespace sparsedyn {
@@ -55,7 +56,18 @@ WallContactPrediction PredictWallContact(const ConvexPolyhedron& polyhedron, con
     const double t = dt ? std::min(t_begin + *dt, t_end) : t_end;
     if (!std::isfinite(t)) return Finish(Kind::kNone, t, nearest, 1);  // the gap at t_begin
     nearest = NearestVertex(polyhedron, path.PoseAt(t), normal, offset);
-    return Finish(dt ? Kind::kContact : Kind::kNone, t, nearest, 1);
+    if (!dt || nearest.gap <= tolerance)
+      return Finish(dt ? Kind::kContact : Kind::kNone, t, nearest, 1);
+    // The root left the gap a hair above the tolerance: step onto the first time it is within.
+    auto gap_at = [&](double time) {
+      return NearestVertex(polyhedron, path.PoseAt(time), normal, offset).gap;
+    };
+    const narrow::LevelCrossing crossing =
+        narrow::StepIntoLevel(gap_at, t, nearest.gap, tolerance, t_end);
+    const double at = crossing.time ? *crossing.time : crossing.apart;
+    nearest = NearestVertex(polyhedron, path.PoseAt(at), normal, offset);
+    if (crossing.time) return Finish(Kind::kContact, at, nearest, 1);
+    return Finish(at < t_end ? Kind::kCheckpoint : Kind::kNone, at, nearest, 1);
   }
 
   // Rotating: conservative advancement. A body point moves towards the wall at most at
