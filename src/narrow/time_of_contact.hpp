@@ -16,10 +16,10 @@ namespace sparsedyn {
 /// What a prediction found in [t_begin, t_end].
 struct ContactPrediction {
   enum class Kind : std::uint8_t {
-    kContact,     // at `time` the distance is <= tolerance (translating pairs: up to a
-                  // round-off of 1e-12 x scale), and `time` is never later than the first time
-                  // the distance reaches the tolerance (translating pairs: it is that time, to
-                  // round-off) or advancement_target x tolerance (rotating pairs)
+    kContact,     // at `time` the walk (warm-started from `features`) reports a distance
+                  // <= tolerance, and `time` is never later than the first time the distance
+                  // reaches the tolerance (translating pairs: it is that time, to round-off) or
+                  // advancement_target x tolerance (rotating pairs)
     kNone,        // the distance stays > tolerance until t_end (which may be infinity)
     kCheckpoint,  // the work cap was reached at `time` < t_end with distance > tolerance:
                   // predict again from there (a detail event that only resumes the prediction)
