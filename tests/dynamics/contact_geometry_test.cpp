@@ -180,5 +180,61 @@ TEST(ContactFromFeatures, ParallelEdgesGiveTheirOverlap) {
   }
 }
 
+int VertexAt(const ConvexPolyhedron& p, const Pose& X, const Vec3& world) {
+  for (int v = 0; v < p.vertex_count(); ++v) {
+    if ((X.ToWorld(p.vertex(v)) - world).norm() < 1e-12) return v;
+  }
+  ADD_FAILURE() << "no vertex at " << world.transpose();
+  return 0;
+}
+
+int FaceAlong(const ConvexPolyhedron& p, const Vec3& normal) {
+  for (int f = 0; f < p.face_count(); ++f) {
+    if ((p.face(f).plane.normal - normal).norm() < 1e-12) return f;
+  }
+  ADD_FAILURE() << "no face along " << normal.transpose();
+  return 0;
+}
+
+// The walk returns one of several equally close pairs; whichever lower-dimensional pair it
+// names, the face-face region is found. B = [0.5, 2.5] x [-0.5, 1.5] x [1, 3] on A = [-1, 1]^3.
+TEST(ContactFromFeatures, AnyOfTheEquallyClosePairsGivesTheFaceRegion) {
+  const TrackedPolyhedron a = Box(1.0), b = Box(1.0);
+  const ConvexPolyhedron& pa = a.polyhedron();
+  const ConvexPolyhedron& pb = b.polyhedron();
+  const Pose X_WA = At(Vec3::Zero()), X_WB = At(Vec3(1.5, 0.5, 2));
+  const int a_corner = VertexAt(pa, X_WA, Vec3(1, 1, 1));
+  const int a_edge_end = VertexAt(pa, X_WA, Vec3(1, -1, 1));
+  int a_edge = -1;
+  for (const int e : pa.VertexEdges(a_corner)) {
+    if (pa.OtherVertex(e, a_corner) == a_edge_end) a_edge = e;
+  }
+  ASSERT_GE(a_edge, 0);
+  const int b_corner = VertexAt(pb, X_WB, Vec3(0.5, -0.5, 1));
+  struct Case {
+    FeaturePair pair;
+    Vec3 witness;
+  };
+  const Case cases[] = {
+      {{FeatureId::Vertex(a_corner), FeatureId::Face(FaceAlong(pb, -Vec3::UnitZ()))}, Vec3(1, 1, 1)},
+      {{FeatureId::Face(FaceAlong(pa, Vec3::UnitZ())), FeatureId::Vertex(b_corner)},
+       Vec3(0.5, -0.5, 1)},
+      {{FeatureId::Edge(a_edge), FeatureId::Face(FaceAlong(pb, -Vec3::UnitZ()))}, Vec3(1, 0, 1)},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(ToString(c.pair.a) + " / " + ToString(c.pair.b));
+    ClosestFeatures f;
+    f.status = ClosestFeatures::Status::kPenetrating;
+    f.features = c.pair;
+    f.point_a = f.point_b = c.witness;
+    f.normal = Vec3(0.3, 0.1, 1).normalized();  // a poor witness normal must not matter
+    const ContactGeometry g = ContactFromFeatures(pa, X_WA, pb, X_WB, f, kTolerance);
+    EXPECT_LT((g.normal - Vec3::UnitZ()).norm(), 1e-15);
+    EXPECT_NEAR(PolygonArea(g), 0.5 * 1.5, 1e-12);
+    ExpectSamePoints(g.points, {Vec3(0.5, -0.5, 1), Vec3(1, -0.5, 1), Vec3(1, 1, 1),
+                                Vec3(0.5, 1, 1)});
+  }
+}
+
 }  // namespace
 }  // namespace sparsedyn
