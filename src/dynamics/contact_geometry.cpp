@@ -236,7 +236,8 @@ ContactGeometry ContactFromFeatures(const ConvexPolyhedron& a, const Pose& X_WA,
   out.distance = features.distance;
 
   // Widen each feature to a parallel, flush neighbour; a face found on A fixes the normal that
-  // B is widened against, and the other way round.
+  // B is widened against. When neither is a face, a separating face next to either feature
+  // gives the normal first, so A's widening already sees a face of B.
   Vec3 n = ContactNormal(side_a, side_b, wa, features.normal);
   if (side_a.feature.type != FeatureType::kFace && side_b.feature.type != FeatureType::kFace &&
       !CrossingEdges(side_a, side_b)) {
@@ -245,8 +246,6 @@ ContactGeometry ContactFromFeatures(const ConvexPolyhedron& a, const Pose& X_WA,
   side_a.feature = side_a.Widened(n, wa, tolerance);
   n = ContactNormal(side_a, side_b, wa, n);
   side_b.feature = side_b.Widened(-n, wb, tolerance);
-  n = ContactNormal(side_a, side_b, wa, n);
-  side_a.feature = side_a.Widened(n, wa, tolerance);
   out.normal = ContactNormal(side_a, side_b, wa, n);
   n = out.normal;
 

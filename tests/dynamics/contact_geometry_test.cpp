@@ -236,5 +236,35 @@ TEST(ContactFromFeatures, AnyOfTheEquallyClosePairsGivesTheFaceRegion) {
   }
 }
 
+// Corners that coincide (vertex-vertex, or an edge through the other's corner) at distance 0
+// carry no witness normal; the separating face next to them gives it. B = [0, 1]^2 x [1, 2].
+TEST(ContactFromFeatures, CoincidentCornersStillGiveTheFaceRegion) {
+  const TrackedPolyhedron a = Box(1.0), b = Box(0.5);
+  const ConvexPolyhedron& pa = a.polyhedron();
+  const ConvexPolyhedron& pb = b.polyhedron();
+  const Pose X_WA = At(Vec3::Zero()), X_WB = At(Vec3(0.5, 0.5, 1.5));
+  const int a_corner = VertexAt(pa, X_WA, Vec3(1, 1, 1));
+  const int b_corner = VertexAt(pb, X_WB, Vec3(1, 1, 1));
+  int b_edge = -1;  // B's bottom edge from (1, 1, 1) to (0, 1, 1)
+  for (const int e : pb.VertexEdges(b_corner)) {
+    if ((X_WB.ToWorld(pb.vertex(pb.OtherVertex(e, b_corner))) - Vec3(0, 1, 1)).norm() < 1e-12) {
+      b_edge = e;
+    }
+  }
+  ASSERT_GE(b_edge, 0);
+  for (const FeatureId fb : {FeatureId::Vertex(b_corner), FeatureId::Edge(b_edge)}) {
+    SCOPED_TRACE(ToString(fb));
+    ClosestFeatures f;
+    f.status = ClosestFeatures::Status::kPenetrating;
+    f.features = {FeatureId::Vertex(a_corner), fb};
+    f.point_a = f.point_b = Vec3(1, 1, 1);
+    f.normal = Vec3(1, 1, 1).normalized();  // the walk's guess: not a separating direction
+    const ContactGeometry g = ContactFromFeatures(pa, X_WA, pb, X_WB, f, kTolerance);
+    EXPECT_LT((g.normal - Vec3::UnitZ()).norm(), 1e-15);
+    EXPECT_NEAR(PolygonArea(g), 1.0, 1e-12);
+    EXPECT_EQ(g.points.size(), 4u);
+  }
+}
+
 }  // namespace
 }  // namespace sparsedyn
