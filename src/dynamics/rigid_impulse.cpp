@@ -138,9 +138,10 @@ RigidImpulseResult ApplyRigidImpulse(RigidBodyState& a, RigidBodyState& b,
                                      const ContactGeometry& contact,
                                      const RigidImpulseOptions& options) {
   RigidImpulseResult result;
-  if (contact.points.empty()) return result;
+  // Two static bodies cannot exchange an impulse (K = 0).
+  if (contact.points.empty() || a.inv_mass + b.inv_mass <= 0.0) return result;
   const Vec3& n = contact.normal;
-  double weighted_point_sum_norm = 0.0;
+  double point_weight = 0.0;
   Vec3 weighted_point = Vec3::Zero();
   double threshold = 0.0;
 
@@ -166,11 +167,11 @@ RigidImpulseResult ApplyRigidImpulse(RigidBodyState& a, RigidBodyState& b,
     const double jn = j.impulse.dot(n);
     result.normal_impulse += jn;
     weighted_point += jn * p;
-    weighted_point_sum_norm += jn;
+    point_weight += jn;
     if (contact.points.size() == 1) break;
     std::tie(p, un) = MostApproaching(a, b, contact.points, n);
   }
-  if (weighted_point_sum_norm > 0.0) result.point = weighted_point / weighted_point_sum_norm;
+  if (point_weight > 0.0) result.point = weighted_point / point_weight;
   return result;
 }
 

@@ -208,9 +208,15 @@ TEST(RigidImpulse, InelasticOrFrictionalNeverGainsEnergy) {
     const Vec3 p0 = Momentum(c.a) + Momentum(c.b);
     const double e = trial % 3 == 0 ? 1.0 : unit(rng);
     const double mu = trial % 3 == 1 ? 0.0 : 1.5 * unit(rng);
+    const double pre = NormalVelocity(c.a, c.b, c.contact.points[0], c.contact.normal);
     const RigidImpulseResult r = ApplyRigidImpulse(c.a.state, c.b.state, c.contact,
                                                    {.restitution = e, .friction = mu});
     applied += r.rounds > 0;
+    // Friction (and the energy limit on it) leaves Newton's law along the normal intact.
+    if (c.contact.points.size() == 1 && r.rounds > 0 && !r.guarded) {
+      EXPECT_NEAR(NormalVelocity(c.a, c.b, c.contact.points[0], c.contact.normal), -e * pre,
+                  1e-12 * std::abs(pre));
+    }
     sliding += r.sliding;
     EXPECT_LE(Energy(c.a) + Energy(c.b), e0 * (1 + 1e-12)) << "trial " << trial;
     EXPECT_LT((Momentum(c.a) + Momentum(c.b) - p0).norm(), 1e-12 * (1 + p0.norm()));
