@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 // ContactFromFeatures: where two touching polyhedra touch, from their closest feature pair: a
 // point, or the overlap of parallel features projected on the contact plane (docs/dynamics.md).
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <span>
-
-#include <Eigen/Geometry>
 
 #include "dynamics/rigid_collision.hpp"
 
@@ -96,8 +95,7 @@ struct Side {
   // as well, and gives the larger contact.
   FeatureId Widened(const Vec3& n, const Vec3& witness, double tolerance) const {
     for (const int f : Faces()) {
-      if (FaceAlong(f, n) &&
-          Flush(FeatureId::Face(f), n, witness, tolerance)) {
+      if (FaceAlong(f, n) && Flush(FeatureId::Face(f), n, witness, tolerance)) {
         return FeatureId::Face(f);
       }
     }
@@ -168,7 +166,8 @@ std::optional<Vec3> SeparatingFaceNormal(const Side& a, const Side& b, const Vec
 // touch along a line (within the tolerance) still give that line.
 std::vector<Vec2> Clip(std::vector<Vec2> subject, const std::vector<Vec2>& clip, double slack) {
   double area = 0.0;
-  for (std::size_t i = 0; i < clip.size(); ++i) area += Cross2(clip[i], clip[(i + 1) % clip.size()]);
+  for (std::size_t i = 0; i < clip.size(); ++i)
+    area += Cross2(clip[i], clip[(i + 1) % clip.size()]);
   const double orientation = area >= 0.0 ? 1.0 : -1.0;
   const bool segment = subject.size() == 2;
   for (std::size_t i = 0; i < clip.size() && !subject.empty(); ++i) {

@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 // ApplyRigidImpulse (thesis §6): the collision impulse of two rigid bodies with rotation, Newton
 // restitution and Coulomb friction at impact; a region gets a few impulses (docs/dynamics.md).
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 #include <utility>
-
-#include <Eigen/Dense>
 
 #include "dynamics/rigid_collision.hpp"
 
@@ -157,8 +156,7 @@ RigidImpulseResult ApplyRigidImpulse(RigidBodyState& a, RigidBodyState& b,
       result.guarded = true;
     }
     const Eigen::Matrix3d k = CollisionMatrix(a, b, p);
-    const PointImpulse j =
-        FrictionImpulse(k, RelativeVelocity(a, b, p), n, e, options.friction);
+    const PointImpulse j = FrictionImpulse(k, RelativeVelocity(a, b, p), n, e, options.friction);
     Apply(a, b, p, j.impulse);
     if (result.rounds == 0) threshold = kRoundSpeedFraction * -un;
     ++result.rounds;

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // ContactFromFeatures on boxes placed by hand, with the features found by FindClosestFeatures:
 // the contact region (point, segment, polygon) against areas and vertices worked out on paper.
-#include <cmath>
-#include <memory>
+#include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <gtest/gtest.h>
+#include <cmath>
+#include <memory>
 
 #include "dynamics/rigid_collision.hpp"
 #include "sparsedyn/geometry/generators.hpp"
@@ -19,8 +19,8 @@ constexpr double kTolerance = 1e-9;
 constexpr double kPointTolerance = 1e-9;
 
 TrackedPolyhedron Box(double half) {
-  return TrackedPolyhedron(std::make_shared<const ConvexPolyhedron>(
-      *MakeBox(Vec3::Constant(half))));
+  return TrackedPolyhedron(
+      std::make_shared<const ConvexPolyhedron>(*MakeBox(Vec3::Constant(half))));
 }
 
 Pose At(const Vec3& p, const Eigen::Quaterniond& q = Eigen::Quaterniond::Identity()) {
@@ -66,8 +66,8 @@ TEST(ContactFromFeatures, CubeOnCubeFaceGivesTheOverlapRectangle) {
     EXPECT_NEAR(c.distance, s, 1e-15);
     EXPECT_NEAR(PolygonArea(c), 0.8 * 1.5, 1e-12);
     const double z = 1.0 + s / 2;
-    ExpectSamePoints(c.points, {Vec3(0.2, -0.5, z), Vec3(1, -0.5, z), Vec3(1, 1, z),
-                                Vec3(0.2, 1, z)});
+    ExpectSamePoints(c.points,
+                     {Vec3(0.2, -0.5, z), Vec3(1, -0.5, z), Vec3(1, 1, z), Vec3(0.2, 1, z)});
   }
 }
 
@@ -104,9 +104,9 @@ TEST(ContactFromFeatures, EdgeOnFaceGivesTheClippedSegment) {
   const TrackedPolyhedron a = Box(1.0), b = Box(0.5);
   for (const double s : kSeparations) {
     SCOPED_TRACE(s);
-    const ContactGeometry c = Contact(a, At(Vec3::Zero()), b,
-                                      At(Vec3(0.8, 0, 1 + 0.5 * std::sqrt(2.0) + s),
-                                         Turn(M_PI / 4, Vec3::UnitX())));
+    const ContactGeometry c =
+        Contact(a, At(Vec3::Zero()), b,
+                At(Vec3(0.8, 0, 1 + 0.5 * std::sqrt(2.0) + s), Turn(M_PI / 4, Vec3::UnitX())));
     EXPECT_LT((c.normal - Vec3::UnitZ()).norm(), 1e-15);
     ExpectSamePoints(c.points, {Vec3(0.3, 0, 1 + s / 2), Vec3(1, 0, 1 + s / 2)});
   }
@@ -118,9 +118,8 @@ TEST(ContactFromFeatures, CrossingEdgesGiveOnePoint) {
   const double h = std::sqrt(2.0);
   for (const double s : kSeparations) {
     SCOPED_TRACE(s);
-    const ContactGeometry c =
-        Contact(a, At(Vec3::Zero(), Turn(M_PI / 4, Vec3::UnitX())), b,
-                At(Vec3(0.1, 0.2, 2 * h + s), Turn(M_PI / 4, Vec3::UnitY())));
+    const ContactGeometry c = Contact(a, At(Vec3::Zero(), Turn(M_PI / 4, Vec3::UnitX())), b,
+                                      At(Vec3(0.1, 0.2, 2 * h + s), Turn(M_PI / 4, Vec3::UnitY())));
     EXPECT_LT((c.normal - Vec3::UnitZ()).norm(), 1e-12);
     ExpectSamePoints(c.points, {Vec3(0.1, 0, h + s / 2)});
   }
@@ -151,15 +150,14 @@ TEST(ContactFromFeatures, TiltBeyondTheAngularToleranceGivesAPoint) {
     for (const Vec3& corner : b.polyhedron().vertices()) {
       if ((tilted * corner).z() < lowest.z()) lowest = tilted * corner;
     }
-    const ContactGeometry point =
-        Contact(a, At(Vec3::Zero()), b, At(Vec3(0, 0, 1 + s) - Vec3(0, 0, lowest.z()), tilted),
-                1e-3);
+    const ContactGeometry point = Contact(
+        a, At(Vec3::Zero()), b, At(Vec3(0, 0, 1 + s) - Vec3(0, 0, lowest.z()), tilted), 1e-3);
     ASSERT_EQ(point.points.size(), 1u);
     EXPECT_NEAR(point.points[0].x(), lowest.x(), 1e-9);
     EXPECT_NEAR(point.points[0].y(), lowest.y(), 1e-9);
 
-    const ContactGeometry flat = Contact(a, At(Vec3::Zero()), b,
-                                         At(Vec3(0, 0, 1.5 + s), Turn(1e-10, Vec3(1, 2, 0))));
+    const ContactGeometry flat =
+        Contact(a, At(Vec3::Zero()), b, At(Vec3(0, 0, 1.5 + s), Turn(1e-10, Vec3(1, 2, 0))));
     EXPECT_EQ(flat.points.size(), 4u);
     EXPECT_NEAR(PolygonArea(flat), 1.0, 1e-9);
   }
@@ -216,7 +214,8 @@ TEST(ContactFromFeatures, AnyOfTheEquallyClosePairsGivesTheFaceRegion) {
     Vec3 witness;
   };
   const Case cases[] = {
-      {{FeatureId::Vertex(a_corner), FeatureId::Face(FaceAlong(pb, -Vec3::UnitZ()))}, Vec3(1, 1, 1)},
+      {{FeatureId::Vertex(a_corner), FeatureId::Face(FaceAlong(pb, -Vec3::UnitZ()))},
+       Vec3(1, 1, 1)},
       {{FeatureId::Face(FaceAlong(pa, Vec3::UnitZ())), FeatureId::Vertex(b_corner)},
        Vec3(0.5, -0.5, 1)},
       {{FeatureId::Edge(a_edge), FeatureId::Face(FaceAlong(pb, -Vec3::UnitZ()))}, Vec3(1, 0, 1)},
@@ -231,8 +230,8 @@ TEST(ContactFromFeatures, AnyOfTheEquallyClosePairsGivesTheFaceRegion) {
     const ContactGeometry g = ContactFromFeatures(pa, X_WA, pb, X_WB, f, kTolerance);
     EXPECT_LT((g.normal - Vec3::UnitZ()).norm(), 1e-15);
     EXPECT_NEAR(PolygonArea(g), 0.5 * 1.5, 1e-12);
-    ExpectSamePoints(g.points, {Vec3(0.5, -0.5, 1), Vec3(1, -0.5, 1), Vec3(1, 1, 1),
-                                Vec3(0.5, 1, 1)});
+    ExpectSamePoints(g.points,
+                     {Vec3(0.5, -0.5, 1), Vec3(1, -0.5, 1), Vec3(1, 1, 1), Vec3(0.5, 1, 1)});
   }
 }
 

@@ -2,12 +2,12 @@
 // ApplyRigidImpulse against independent oracles: SphereImpulse on the line of centres, the
 // textbook rod struck at its end, conservation laws on random cases, the Coulomb cone of a
 // block landing on a floor, and regions that must stop approaching everywhere.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <random>
-
-#include <Eigen/Dense>
-#include <gtest/gtest.h>
 
 #include "dynamics/rigid_collision.hpp"
 #include "dynamics/sphere_collision.hpp"
@@ -20,8 +20,8 @@ constexpr double kConservationTolerance = 1e-12;
 
 struct Body {
   RigidBodyState state;
-  double mass = 0.0;                                     // 0 for a static wall
-  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();     // world frame
+  double mass = 0.0;                                  // 0 for a static wall
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  // world frame
 };
 
 Body MakeBody(double mass, const Eigen::Matrix3d& inertia, const Vec3& centre) {
@@ -179,18 +179,20 @@ TEST(RigidImpulse, FrictionlessElasticConservesEnergyAndMomenta) {
     ++applied;
     multi_round += r.rounds > 1;
     worst_energy = std::max(worst_energy, std::abs(Energy(c.a) + Energy(c.b) - e0) / e0);
-    worst_momentum = std::max(worst_momentum, (Momentum(c.a) + Momentum(c.b) - p0).norm() / p_scale);
-    worst_angular = std::max(
-        worst_angular, (AngularMomentum(c.a) + AngularMomentum(c.b) - l0).norm() / l_scale);
+    worst_momentum =
+        std::max(worst_momentum, (Momentum(c.a) + Momentum(c.b) - p0).norm() / p_scale);
+    worst_angular = std::max(worst_angular,
+                             (AngularMomentum(c.a) + AngularMomentum(c.b) - l0).norm() / l_scale);
     if (c.contact.points.size() == 1) {
       EXPECT_NEAR(NormalVelocity(c.a, c.b, c.contact.points[0], c.contact.normal), -pre,
                   1e-12 * std::abs(pre));
     }
     EXPECT_GE(MinNormalVelocity(c), -1e-9) << "trial " << trial;
   }
-  std::printf("frictionless e=1: %d impulses (%d regions needing several rounds); max relative "
-              "errors: energy %.3g, momentum %.3g, angular momentum %.3g\n",
-              applied, multi_round, worst_energy, worst_momentum, worst_angular);
+  std::printf(
+      "frictionless e=1: %d impulses (%d regions needing several rounds); max relative "
+      "errors: energy %.3g, momentum %.3g, angular momentum %.3g\n",
+      applied, multi_round, worst_energy, worst_momentum, worst_angular);
   EXPECT_GT(applied, 4000);
   EXPECT_GT(multi_round, 100);
   EXPECT_LT(worst_energy, kConservationTolerance);
@@ -209,8 +211,8 @@ TEST(RigidImpulse, InelasticOrFrictionalNeverGainsEnergy) {
     const double e = trial % 3 == 0 ? 1.0 : unit(rng);
     const double mu = trial % 3 == 1 ? 0.0 : 1.5 * unit(rng);
     const double pre = NormalVelocity(c.a, c.b, c.contact.points[0], c.contact.normal);
-    const RigidImpulseResult r = ApplyRigidImpulse(c.a.state, c.b.state, c.contact,
-                                                   {.restitution = e, .friction = mu});
+    const RigidImpulseResult r =
+        ApplyRigidImpulse(c.a.state, c.b.state, c.contact, {.restitution = e, .friction = mu});
     applied += r.rounds > 0;
     // Friction (and the energy limit on it) leaves Newton's law along the normal intact.
     if (c.contact.points.size() == 1 && r.rounds > 0 && !r.guarded) {
@@ -247,9 +249,9 @@ TEST(RigidImpulse, BlockOnFloorSticksOrSlidesAtTheCoulombThreshold) {
     Body floor = Wall();
     Body block = MakeBody(s.m, BoxInertia(s.m, s.h), Vec3(0, 0, s.h.z()));
     block.state.velocity = Vec3(vx, 0, -s.vz);
-    const RigidImpulseResult r = ApplyRigidImpulse(
-        floor.state, block.state, PointContact(Vec3::Zero(), Vec3::UnitZ()),
-        {.restitution = s.e, .friction = s.mu});
+    const RigidImpulseResult r =
+        ApplyRigidImpulse(floor.state, block.state, PointContact(Vec3::Zero(), Vec3::UnitZ()),
+                          {.restitution = s.e, .friction = s.mu});
     const bool sticks = std::abs(factor) <= 1.0;
     const double jz = s.m * (1 + s.e) * s.vz;
     const double jx = sticks ? -vx / s.Kxx() : -s.mu * jz * (vx > 0 ? 1.0 : -1.0);
