@@ -41,41 +41,35 @@ struct Side {
     return (Vertex(poly.edge(e).vertices[1]) - Vertex(poly.edge(e).vertices[0])).normalized();
   }
 
-  // The feature's vertices in the world: 1, 2 (an edge) or a face loop.
+  // Indices of a feature's vertices: 1, 2 (an edge) or a face loop.
+  std::vector<std::int32_t> VertexIndices(FeatureId f) const {
+    if (f.type == FeatureType::kVertex) return {f.index};
+    if (f.type == FeatureType::kEdge) {
+      return {poly.edge(f.index).vertices[0], poly.edge(f.index).vertices[1]};
+    }
+    const auto loop = poly.FaceVertices(f.index);
+    return {loop.begin(), loop.end()};
+  }
+
+  // The feature's vertices in the world.
   std::vector<Vec3> Points(FeatureId f) const {
     std::vector<Vec3> out;
-    if (f.type == FeatureType::kVertex) out.push_back(Vertex(f.index));
-    if (f.type == FeatureType::kEdge) {
-      for (const int v : poly.edge(f.index).vertices) out.push_back(Vertex(v));
-    }
-    if (f.type == FeatureType::kFace) {
-      for (const int v : poly.FaceVertices(f.index)) out.push_back(Vertex(v));
-    }
+    for (const int v : VertexIndices(f)) out.push_back(Vertex(v));
     return out;
   }
 
   // The feature's vertices and their neighbours: by convexity the polyhedron lies in the cone
   // they span from the feature, so a plane with all of them on one side has it all there.
   std::vector<Vec3> Neighbourhood() const {
-    std::vector<std::int32_t> vertices;
-    if (feature.type == FeatureType::kVertex) vertices = {feature.index};
-    if (feature.type == FeatureType::kEdge) {
-      vertices.assign(poly.edge(feature.index).vertices.begin(),
-                      poly.edge(feature.index).vertices.end());
-    }
-    if (feature.type == FeatureType::kFace) {
-      const auto loop = poly.FaceVertices(feature.index);
-      vertices.assign(loop.begin(), loop.end());
-    }
     std::vector<Vec3> out;
-    for (const int v : vertices) {
+    for (const int v : VertexIndices(feature)) {
       out.push_back(Vertex(v));
       for (const int e : poly.VertexEdges(v)) out.push_back(Vertex(poly.OtherVertex(e, v)));
     }
     return out;
   }
 
-  // The faces that contain the feature (itself for a face).
+  // The faces that contain a vertex or an edge (none for a face: nothing is wider).
   std::span<const std::int32_t> Faces() const {
     if (feature.type == FeatureType::kVertex) return poly.VertexFaces(feature.index);
     if (feature.type == FeatureType::kEdge) return poly.edge(feature.index).faces;
@@ -163,11 +157,12 @@ std::optional<Vec3> SeparatingFaceNormal(const Side& a, const Side& b, const Vec
 
 // Sutherland & Hodgman 1974: clips `subject` (a polygon, or a segment as 2 points) by the
 // convex polygon `clip` of either orientation, grown by `slack` so that features that only
-// touch along a line (within the tolerance) still give that line.
+// touch along a line (up to round-off) still give that line.
 std::vector<Vec2> Clip(std::vector<Vec2> subject, const std::vector<Vec2>& clip, double slack) {
   double area = 0.0;
-  for (std::size_t i = 0; i < clip.size(); ++i)
+  for (std::size_t i = 0; i < clip.size(); ++i) {
     area += Cross2(clip[i], clip[(i + 1) % clip.size()]);
+  }
   const double orientation = area >= 0.0 ? 1.0 : -1.0;
   const bool segment = subject.size() == 2;
   for (std::size_t i = 0; i < clip.size() && !subject.empty(); ++i) {

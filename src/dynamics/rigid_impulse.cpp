@@ -97,7 +97,8 @@ PointImpulse FrictionImpulse(const Eigen::Matrix3d& k, const Vec3& u, const Vec3
     // qa s^2 + qb s + qc = 0 with qa > 0, qc <= 0: the positive root, stable form.
     const double root = std::sqrt(std::max(qb * qb - 4.0 * qa * qc, 0.0));
     const double s = qb >= 0.0 ? (-2.0 * qc) / (qb + root) : (root - qb) / (2.0 * qa);
-    out.impulse = frictionless + std::clamp(s, 0.0, 1.0) * delta;
+    // qa = 0 only when friction changed nothing, so the gain was round-off.
+    out.impulse = qa > 0.0 ? Vec3(frictionless + std::clamp(s, 0.0, 1.0) * delta) : frictionless;
   }
   return out;
 }
@@ -150,6 +151,8 @@ RigidImpulseResult ApplyRigidImpulse(RigidBodyState& a, RigidBodyState& b,
   double un = RelativeVelocity(a, b, p).dot(n);
   if (!(un < 0.0)) std::tie(p, un) = MostApproaching(a, b, contact.points, n);
   while (un < -threshold && result.rounds < kMaxRounds) {
+    // The guard applies to every round: the slow rounds after the first are what would
+    // otherwise collapse; `guarded` then reports that any round was made elastic.
     double e = options.restitution;
     if (-un < options.elastic_below_speed && e < 1.0) {
       e = 1.0;
