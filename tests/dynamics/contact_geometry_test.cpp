@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <random>
 
 #include "dynamics/rigid_collision.hpp"
 #include "sparsedyn/geometry/generators.hpp"
@@ -263,6 +265,100 @@ TEST(ContactFromFeatures, CoincidentCornersStillGiveTheFaceRegion) {
     EXPECT_NEAR(PolygonArea(g), 1.0, 1e-12);
     EXPECT_EQ(g.points.size(), 4u);
   }
+}
+
+// Oracle for the overlap area of two convex polygons, by another method than clipping: the
+// overlap's vertices are the corners of each inside the other and the crossings of their
+// edges; sorted by angle about their mean they give the area by the shoelace formula.
+double OverlapAreaOracle(const std::vector<Eigen::Vector2d>& p,
+                         const std::vector<Eigen::Vector2d>& q) {
+  using V2 = Eigen::Vector2d;
+  auto cross = [](const V2& a, const V2& b) { return a.x() * b.y() - a.y() * b.x(); };
+  auto inside = [&](const V2& x, const std::vector<V2>& poly) {  // counter-clockwise poly
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      if (cross(poly[(i + 1) % poly.size()] - poly[i], x - poly[i]) < 0) return false;
+    }
+    return true;
+  };
+  std::vector<V2> corners;
+  for (const V2& x : p) {
+    if (inside(x, q)) corners.push_back(x);
+  }
+  for (const V2& x : q) {
+    if (inside(x, p)) corners.push_back(x);
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      const V2 a = p[i], da = p[(i + 1) % p.size()] - a;
+      const V2 b = q[j], db = q[(j + 1) % q.size()] - b;
+      const double den = cross(da, db);
+      if (den == 0) continue;
+      const double s = cross(b - a, db) / den, t = cross(b - a, da) / den;
+      if (s >= 0 && s <= 1 && t >= 0 && t <= 1) corners.push_back(a + s * da);
+    }
+  }
+  if (corners.size() < 3) return 0;
+  V2 mean = V2::Zero();
+  for (const V2& x : corners) mean += x;
+  mean /= static_cast<double>(corners.size());
+  std::sort(corners.begin(), corners.end(), [&](const V2& a, const V2& b) {
+    return std::atan2(a.y() - mean.y(), a.x() - mean.x()) <
+           std::atan2(b.y() - mean.y(), b.x() - mean.x());
+  });
+  double area = 0;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    area += cross(corners[i], corners[(i + 1) % corners.size()]);
+  }
+  return 0.5 * area;
+}
+
+// Random boxes resting flush on each other (B turned about the normal, shifted in the plane,
+// the pair then turned and moved as a whole): the region's area equals the oracle's, and every
+// region vertex lies on both touching faces.
+TEST(ContactFromFeatures, RandomFlushBoxesAgreeWithTheOverlapOracle) {
+  std::mt19937_64 rng(20261122);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int regions = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Vec3 ha(0.3 + unit(rng), 0.3 + unit(rng), 0.3 + unit(rng));
+    const Vec3 hb(0.3 + unit(rng), 0.3 + unit(rng), 0.3 + unit(rng));
+    const TrackedPolyhedron a(std::make_shared<const ConvexPolyhedron>(*MakeBox(ha)));
+    const TrackedPolyhedron b(std::make_shared<const ConvexPolyhedron>(*MakeBox(hb)));
+    const double turn = 2 * M_PI * unit(rng);
+    const Eigen::Vector2d shift(2 * (unit(rng) - 0.5) * (ha.x() + hb.x()),
+                                2 * (unit(rng) - 0.5) * (ha.y() + hb.y()));
+    const double s = kSeparations[trial % 3];
+    const Eigen::Quaterniond q = Eigen::Quaterniond::UnitRandom();
+    const Vec3 t(unit(rng), unit(rng), unit(rng));
+    const Pose X_WA = At(t, q);
+    const Pose X_WB =
+        At(t + q * Vec3(shift.x(), shift.y(), ha.z() + hb.z() + s), q * Turn(turn, Vec3::UnitZ()));
+    SCOPED_TRACE(trial);
+    const ContactGeometry c = Contact(a, X_WA, b, X_WB);
+
+    // The oracle in A's frame: A's top face and B's bottom face (both counter-clockwise).
+    std::vector<Eigen::Vector2d> top, bottom;
+    const Eigen::Rotation2Dd r(turn);
+    for (const Eigen::Vector2d& corner : {Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1),
+                                          Eigen::Vector2d(1, 1), Eigen::Vector2d(-1, 1)}) {
+      top.push_back(corner.cwiseProduct(ha.head<2>()));
+      bottom.push_back(shift + r * corner.cwiseProduct(hb.head<2>()));
+    }
+    const double area = OverlapAreaOracle(top, bottom);
+    if (area < 1e-6) continue;  // the faces meet at a corner or an edge only
+    ++regions;
+    EXPECT_LT((c.normal - q * Vec3::UnitZ()).norm(), 1e-12);
+    EXPECT_NEAR(PolygonArea(c), area, 1e-9);
+    for (const Vec3& p : c.points) {
+      const Vec3 p_A = X_WA.ToBody(p);
+      EXPECT_NEAR(p_A.z(), ha.z() + s / 2, 1e-12);
+      EXPECT_LE((p_A.head<2>().cwiseAbs() - ha.head<2>()).maxCoeff(), 1e-9);
+      const Vec3 p_B = X_WB.ToBody(p);
+      EXPECT_NEAR(p_B.z(), -hb.z() - s / 2, 1e-12);
+      EXPECT_LE((p_B.head<2>().cwiseAbs() - hb.head<2>()).maxCoeff(), 1e-9);
+    }
+  }
+  EXPECT_GT(regions, 200);
 }
 
 }  // namespace
