@@ -59,6 +59,17 @@ void ExpectSamePoints(const std::vector<Vec3>& got, const std::vector<Vec3>& exp
 
 constexpr double kSeparations[] = {0.0, 1e-12, -1e-12};
 
+// Uniform random unit vector and rotation from our own stream (Eigen's Random uses std::rand,
+// whose state other tests share, which would make a test depend on the order of the others).
+Vec3 RandomDirection(std::mt19937_64& rng) {
+  std::normal_distribution<double> g;
+  return Vec3(g(rng), g(rng), g(rng)).normalized();
+}
+Eigen::Quaterniond RandomRotation(std::mt19937_64& rng) {
+  std::normal_distribution<double> g;
+  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized();
+}
+
 TEST(ContactFromFeatures, CubeOnCubeFaceGivesTheOverlapRectangle) {
   const TrackedPolyhedron a = Box(1.0), b = Box(1.0);
   for (const double s : kSeparations) {
@@ -328,7 +339,7 @@ TEST(ContactFromFeatures, RandomFlushBoxesAgreeWithTheOverlapOracle) {
     const Eigen::Vector2d shift(2 * (unit(rng) - 0.5) * (ha.x() + hb.x()),
                                 2 * (unit(rng) - 0.5) * (ha.y() + hb.y()));
     const double s = kSeparations[trial % 3];
-    const Eigen::Quaterniond q = Eigen::Quaterniond::UnitRandom();
+    const Eigen::Quaterniond q = RandomRotation(rng);
     const Vec3 t(unit(rng), unit(rng), unit(rng));
     const Pose X_WA = At(t, q);
     const Pose X_WB =
@@ -359,6 +370,37 @@ TEST(ContactFromFeatures, RandomFlushBoxesAgreeWithTheOverlapOracle) {
     }
   }
   EXPECT_GT(regions, 200);
+}
+
+// Random hulls moved into touching: the normal separates the two bodies and every contact
+// point lies on both surfaces (point contacts, generic orientations).
+TEST(ContactFromFeatures, RandomTouchingHullsGiveASeparatingNormal) {
+  std::mt19937_64 rng(99);
+  for (int trial = 0; trial < 200; ++trial) {
+    const auto hull_a = RandomConvexPolyhedron(20 + static_cast<int>(rng() % 40), rng());
+    const auto hull_b = RandomConvexPolyhedron(20 + static_cast<int>(rng() % 40), rng());
+    ASSERT_TRUE(hull_a && hull_b);
+    const TrackedPolyhedron a(std::make_shared<const ConvexPolyhedron>(*hull_a));
+    const TrackedPolyhedron b(std::make_shared<const ConvexPolyhedron>(*hull_b));
+    const Pose X_WA = At(Vec3::Zero(), RandomRotation(rng));
+    Pose X_WB = At(3.0 * RandomDirection(rng), RandomRotation(rng));
+    const ClosestFeatures apart = FindClosestFeatures(a, X_WA, b, X_WB);
+    X_WB.translation -= (apart.distance + kSeparations[trial % 3]) * apart.normal;
+    SCOPED_TRACE(trial);
+    const ContactGeometry c = Contact(a, X_WA, b, X_WB);
+    double top_a = -kInfinity, bottom_b = kInfinity;
+    for (const Vec3& v : a.polyhedron().vertices()) {
+      top_a = std::max(top_a, c.normal.dot(X_WA.ToWorld(v)));
+    }
+    for (const Vec3& v : b.polyhedron().vertices()) {
+      bottom_b = std::min(bottom_b, c.normal.dot(X_WB.ToWorld(v)));
+    }
+    EXPECT_NEAR(bottom_b - top_a, kSeparations[trial % 3], 1e-9);
+    ASSERT_FALSE(c.points.empty());
+    for (const Vec3& p : c.points) {
+      EXPECT_NEAR(c.normal.dot(p), 0.5 * (top_a + bottom_b), 1e-9);
+    }
+  }
 }
 
 }  // namespace
