@@ -376,7 +376,7 @@ TEST(ContactFromFeatures, RandomFlushBoxesAgreeWithTheOverlapOracle) {
 // point lies on both surfaces (point contacts, generic orientations).
 TEST(ContactFromFeatures, RandomTouchingHullsGiveASeparatingNormal) {
   std::mt19937_64 rng(99);
-  for (int trial = 0; trial < 200; ++trial) {
+  for (int trial = 0; trial < 500; ++trial) {
     const auto hull_a = RandomConvexPolyhedron(20 + static_cast<int>(rng() % 40), rng());
     const auto hull_b = RandomConvexPolyhedron(20 + static_cast<int>(rng() % 40), rng());
     ASSERT_TRUE(hull_a && hull_b);
