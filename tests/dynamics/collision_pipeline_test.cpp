@@ -9,44 +9,21 @@
 #include <random>
 
 #include "dynamics/rigid_collision.hpp"
+#include "rigid_test_bodies.hpp"
 #include "sparsedyn/geometry/generators.hpp"
 
 namespace sparsedyn {
 namespace {
 
+using namespace test;  // NOLINT(google-build-using-namespace): test helpers
+
 constexpr double kTolerance = 1e-9;  // contact tolerance of these unit-size scenes
 
-Eigen::Quaterniond RandomRotation(std::mt19937_64& rng) {
+Body ShapeBody(const ConvexPolyhedron& shape, const Pose& X, std::mt19937_64& rng) {
   std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized();
-}
-
-struct Body {
-  RigidBodyState state;
-  double mass = 0.0;
-  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  // world frame
-
-  double Energy() const {
-    return 0.5 * mass * state.velocity.squaredNorm() +
-           0.5 * state.angular_velocity.dot(inertia * state.angular_velocity);
-  }
-  Vec3 AngularMomentum() const {
-    return mass * state.centre.cross(state.velocity) + inertia * state.angular_velocity;
-  }
-  Vec3 PointVelocity(const Vec3& p) const {
-    return state.velocity + state.angular_velocity.cross(p - state.centre);
-  }
-};
-
-Body MakeBody(const ConvexPolyhedron& shape, const Pose& X, std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  Body body;
-  body.mass = shape.volume();
   const Eigen::Matrix3d r = X.rotation.toRotationMatrix();
-  body.inertia = r * shape.inertia() * r.transpose();
-  body.state.centre = X.ToWorld(shape.centroid());
-  body.state.inv_mass = 1.0 / body.mass;
-  body.state.inv_inertia = body.inertia.inverse();
+  Body body =
+      MakeBody(shape.volume(), r * shape.inertia() * r.transpose(), X.ToWorld(shape.centroid()));
   body.state.velocity = Vec3(g(rng), g(rng), g(rng));
   body.state.angular_velocity = Vec3(g(rng), g(rng), g(rng));
   return body;
@@ -76,21 +53,20 @@ TEST(CollisionPipeline, TouchingHullsCollideElasticallyAndSeparateEverywhere) {
     const ContactGeometry contact =
         ContactFromFeatures(a.polyhedron(), X_WA, b.polyhedron(), X_WB, touching, kTolerance);
 
-    Body ba = MakeBody(a.polyhedron(), X_WA, rng), bb = MakeBody(b.polyhedron(), X_WB, rng);
-    const double energy = ba.Energy() + bb.Energy();
-    const Vec3 momentum = ba.mass * ba.state.velocity + bb.mass * bb.state.velocity;
-    const Vec3 angular = ba.AngularMomentum() + bb.AngularMomentum();
+    Body ba = ShapeBody(a.polyhedron(), X_WA, rng), bb = ShapeBody(b.polyhedron(), X_WB, rng);
+    const double energy = Energy(ba) + Energy(bb);
+    const Vec3 momentum = Momentum(ba) + Momentum(bb);
+    const Vec3 angular = AngularMomentum(ba) + AngularMomentum(bb);
     const RigidImpulseResult r = ApplyRigidImpulse(ba.state, bb.state, contact, {});
     SCOPED_TRACE(trial);
     collisions += r.rounds > 0;
     regions += r.rounds > 0 && contact.points.size() > 1;
-    EXPECT_NEAR(ba.Energy() + bb.Energy(), energy, 1e-12 * energy);
-    EXPECT_LT((ba.mass * ba.state.velocity + bb.mass * bb.state.velocity - momentum).norm(),
-              1e-12 * (1 + momentum.norm()));
-    EXPECT_LT((ba.AngularMomentum() + bb.AngularMomentum() - angular).norm(),
+    EXPECT_NEAR(Energy(ba) + Energy(bb), energy, 1e-12 * energy);
+    EXPECT_LT((Momentum(ba) + Momentum(bb) - momentum).norm(), 1e-12 * (1 + momentum.norm()));
+    EXPECT_LT((AngularMomentum(ba) + AngularMomentum(bb) - angular).norm(),
               1e-12 * (1 + angular.norm()));
     for (const Vec3& p : contact.points) {
-      EXPECT_GE((bb.PointVelocity(p) - ba.PointVelocity(p)).dot(contact.normal), -1e-9);
+      EXPECT_GE(NormalVelocity(ba, bb, p, contact.normal), -1e-9);
     }
   }
   EXPECT_GT(collisions, 100);

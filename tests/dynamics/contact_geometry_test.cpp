@@ -10,6 +10,7 @@
 #include <random>
 
 #include "dynamics/rigid_collision.hpp"
+#include "rigid_test_bodies.hpp"
 #include "sparsedyn/geometry/generators.hpp"
 
 namespace sparsedyn {
@@ -59,15 +60,10 @@ void ExpectSamePoints(const std::vector<Vec3>& got, const std::vector<Vec3>& exp
 
 constexpr double kSeparations[] = {0.0, 1e-12, -1e-12};
 
-// Uniform random unit vector and rotation from our own stream (Eigen's Random uses std::rand,
-// whose state other tests share, which would make a test depend on the order of the others).
+// Uniform random unit vector from our own stream (see test::RandomRotation).
 Vec3 RandomDirection(std::mt19937_64& rng) {
   std::normal_distribution<double> g;
   return Vec3(g(rng), g(rng), g(rng)).normalized();
-}
-Eigen::Quaterniond RandomRotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized();
 }
 
 TEST(ContactFromFeatures, CubeOnCubeFaceGivesTheOverlapRectangle) {
@@ -339,7 +335,7 @@ TEST(ContactFromFeatures, RandomFlushBoxesAgreeWithTheOverlapOracle) {
     const Eigen::Vector2d shift(2 * (unit(rng) - 0.5) * (ha.x() + hb.x()),
                                 2 * (unit(rng) - 0.5) * (ha.y() + hb.y()));
     const double s = kSeparations[trial % 3];
-    const Eigen::Quaterniond q = RandomRotation(rng);
+    const Eigen::Quaterniond q = test::RandomRotation(rng);
     const Vec3 t(unit(rng), unit(rng), unit(rng));
     const Pose X_WA = At(t, q);
     const Pose X_WB =
@@ -382,8 +378,8 @@ TEST(ContactFromFeatures, RandomTouchingHullsGiveASeparatingNormal) {
     ASSERT_TRUE(hull_a && hull_b);
     const TrackedPolyhedron a(std::make_shared<const ConvexPolyhedron>(*hull_a));
     const TrackedPolyhedron b(std::make_shared<const ConvexPolyhedron>(*hull_b));
-    const Pose X_WA = At(Vec3::Zero(), RandomRotation(rng));
-    Pose X_WB = At(3.0 * RandomDirection(rng), RandomRotation(rng));
+    const Pose X_WA = At(Vec3::Zero(), test::RandomRotation(rng));
+    Pose X_WB = At(3.0 * RandomDirection(rng), test::RandomRotation(rng));
     const ClosestFeatures apart = FindClosestFeatures(a, X_WA, b, X_WB);
     X_WB.translation -= (apart.distance + kSeparations[trial % 3]) * apart.normal;
     SCOPED_TRACE(trial);

@@ -11,31 +11,18 @@
 
 #include "dynamics/rigid_collision.hpp"
 #include "dynamics/sphere_collision.hpp"
+#include "rigid_test_bodies.hpp"
 
 namespace sparsedyn {
 namespace {
+
+using namespace test;  // NOLINT(google-build-using-namespace): test helpers
 
 // Round-off of a few 3x3 products on O(1) data, with room for mass ratios up to ~100.
 constexpr double kConservationTolerance = 1e-12;
 // Round-off of a point's velocity, absolute: the random velocities and spins are O(1), so a
 // tiny approach speed still carries O(1e-16) error from its O(1) terms.
 constexpr double kSpeedRoundOff = 1e-12;
-
-struct Body {
-  RigidBodyState state;
-  double mass = 0.0;                                  // 0 for a static wall
-  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  // world frame
-};
-
-Body MakeBody(double mass, const Eigen::Matrix3d& inertia, const Vec3& centre) {
-  Body body;
-  body.mass = mass;
-  body.inertia = inertia;
-  body.state.centre = centre;
-  body.state.inv_mass = 1.0 / mass;
-  body.state.inv_inertia = inertia.inverse();
-  return body;
-}
 
 Body Wall() { return Body{}; }
 
@@ -44,28 +31,6 @@ Eigen::Matrix3d BoxInertia(double mass, const Vec3& h) {
   return (mass / 3.0) * Vec3(h.y() * h.y() + h.z() * h.z(), h.x() * h.x() + h.z() * h.z(),
                              h.x() * h.x() + h.y() * h.y())
                             .asDiagonal();
-}
-
-double Energy(const Body& b) {
-  return 0.5 * b.mass * b.state.velocity.squaredNorm() +
-         0.5 * b.state.angular_velocity.dot(b.inertia * b.state.angular_velocity);
-}
-Vec3 Momentum(const Body& b) { return b.mass * b.state.velocity; }
-// About the world origin: orbital plus spin.
-Vec3 AngularMomentum(const Body& b) {
-  return b.mass * b.state.centre.cross(b.state.velocity) + b.inertia * b.state.angular_velocity;
-}
-Vec3 PointVelocity(const Body& b, const Vec3& p) {
-  return b.state.velocity + b.state.angular_velocity.cross(p - b.state.centre);
-}
-double NormalVelocity(const Body& a, const Body& b, const Vec3& p, const Vec3& n) {
-  return (PointVelocity(b, p) - PointVelocity(a, p)).dot(n);
-}
-
-// From our own stream: Eigen's UnitRandom uses std::rand, shared with other tests.
-Eigen::Quaterniond RandomRotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized();
 }
 
 ContactGeometry PointContact(const Vec3& p, const Vec3& n) {
