@@ -280,6 +280,7 @@ ContactGeometry ContactFromFeatures(const ConvexPolyhedron& a, const Pose& X_WA,
   ContactGeometry out;
   out.distance = features.distance;
 
+  // The features that really hold the witness points: their neighbourhoods bound the normal.
   side_a.feature = side_a.Narrowest(wa, tolerance);
   side_b.feature = side_b.Narrowest(wb, tolerance);
 
