@@ -118,11 +118,44 @@ std::optional<RunResult> RunSparsedyn(const SceneDescription& scene, double dura
   return run;
 }
 
+// The scene's own kinetic energy, from our inertia tensor in the world frame.
+double SceneKineticEnergy(const SceneDescription& scene) {
+  double energy = 0;
+  for (const SceneBody& body : scene.bodies) {
+    const ConvexPolyhedron& p = *scene.shapes[body.shape].polyhedron;
+    const Eigen::Matrix3d R = body.orientation.toRotationMatrix();
+    const Eigen::Matrix3d I_W = body.mass / p.volume() * R * p.inertia() * R.transpose();
+    energy += 0.5 * body.mass * body.velocity.squaredNorm() +
+              0.5 * body.angular_velocity.dot(I_W * body.angular_velocity);
+  }
+  return energy;
+}
+
+// Bullet must start from our scene: the same poses and the same energy (which checks the
+// masses and the inertia handed over through the principal frames). False with a message if not.
+bool StartsFromTheScene(const SceneDescription& scene, const BulletThesisWorld& world) {
+  constexpr double kTolerance = 1e-9;  // a few rotations and an eigen-decomposition of round-off
+  double pose_error = 0;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const Pose X_WB = world.PoseOf(i);
+    pose_error = std::max({pose_error, (X_WB.translation - scene.bodies[i].position).norm(),
+                           X_WB.rotation.angularDistance(scene.bodies[i].orientation)});
+  }
+  const double ours = SceneKineticEnergy(scene);
+  const double energy_error = std::abs(world.KineticEnergy() - ours) / ours;
+  if (pose_error < kTolerance && energy_error < kTolerance) return true;
+  std::fprintf(stderr,
+               "thesis_bullet: Bullet's start differs from the scene: pose %.3g, energy %.3g\n",
+               pose_error, energy_error);
+  return false;
+}
+
 RunResult RunBullet(const SceneDescription& scene, double duration, double dt) {
   BulletThesisWorld world(scene);
   ContactProbe probe(scene);
   std::vector<Pose> poses(world.BodyCount());
   RunResult run{.engine = "bullet", .dt = dt};
+  if (!StartsFromTheScene(scene, world)) std::exit(1);
   const double energy = world.KineticEnergy();
   const auto steps = static_cast<std::uint64_t>(std::llround(duration / dt));
   for (std::uint64_t s = 0; s < steps; ++s) {
