@@ -25,11 +25,17 @@ struct ContactPrediction {
   double time = 0.0;
   ClosestFeatures features;  // the closest features at `time` (at t_end for kNone)
   int iterations = 0;        // zone events or advancement steps taken
+  int advancement_steps = 0; // of which conservative-advancement steps taken by a translating
+                             // pair whose features were degenerate (diagnostics)
 };
 
 struct ContactPredictionOptions {
   double tolerance = 0.0;  // contact when the distance <= tolerance (m, > 0)
   int max_iterations = 64; // per call; beyond it kCheckpoint
+  // Rotating pairs: each advancement step stops where the gap may first have closed to
+  // advancement_target * tolerance (in (0, 1)), so the prediction reaches a gap <= tolerance
+  // in finitely many steps and is never later than the first time the gap is that small.
+  double advancement_target = 0.5;
   ClosestFeaturesOptions walk;
 };
 
