@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "apps/cli/run_command.hpp"
 
+#include "apps/cli/conventional_run.hpp"
+#include "apps/cli/run_options.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -24,21 +27,6 @@ namespace {
 
 // Where `sparsedyn run` with the default scene writes its recording unless told otherwise.
 constexpr const char* kDefaultRecording = "sparsedyn-default.sdrec";
-
-struct RunOptions {
-  std::string scene_file;
-  std::optional<std::string> preset;
-  std::optional<std::uint32_t> n;
-  std::optional<double> density;
-  std::optional<std::uint64_t> seed;
-  std::optional<double> until;
-  std::optional<std::string> broadphase;
-  bool json = false;
-  std::string record_file;
-  bool no_record = false;
-  std::string write_scene;
-  std::string program;  // how to invoke this tool again, for the "view it with" hint
-};
 
 // What is about to run: the scene, its World and what the summary reports about it.
 struct Setup {
@@ -129,6 +117,7 @@ nlohmann::json Summary(const Setup& setup, const std::string& broadphase, double
   }
   const double collisions = static_cast<double>(stats.collisions + stats.wall_collisions);
   return {
+      {"method", "event"},
       {"preset", setup.scene.name},
       {"bodies", world.BodyCount()},
       {"density", setup.density},
@@ -175,6 +164,11 @@ void PrintSummary(const nlohmann::json& out) {
 }
 
 int Run(const RunOptions& options) {
+  if (options.method == "conventional") return RunConventional(options);
+  if (options.dt) {
+    std::cerr << "sparsedyn run: --dt applies to --method conventional\n";
+    return 2;
+  }
   Result<Setup> setup = MakeSetup(options);
   if (!setup) {
     std::cerr << "sparsedyn run: " << setup.error().message << "\n";
@@ -280,6 +274,15 @@ void AddRunCommand(CLI::App& app, const std::string& program) {
   run->add_option("--write-scene", options->write_scene,
                   "Write the scene with every body listed to this JSON file and exit "
                   "(`sparsedyn run FILE` then gives the same run)");
+  run->add_option("--method", options->method,
+                  "event (default: the event-driven World) | conventional (fixed steps of --dt, "
+                  "collisions located by bisection to --digits more digits; polyhedra only)")
+      ->check(CLI::IsMember({"event", "conventional"}));
+  run->add_option("--dt", options->dt, "Time step of --method conventional, s (> 0)");
+  run->add_option("--digits", options->digits,
+                  "Digits the conventional method locates a collision to below the step "
+                  "(default 4)")
+      ->check(CLI::Range(0, 15));
   run->callback([options] { throw CLI::RuntimeError(Run(*options)); });
 }
 
