@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "apps/cli/run_support.hpp"
 #include "scenes/presets.hpp"
 #include "sparsedyn/conventional.hpp"
 #include "sparsedyn/io/scene_file.hpp"
@@ -41,35 +42,12 @@ Result<ConventionalWorld> Build(const SceneDescription& scene,
   }
   ConventionalWorld world(scene.settings, conventional);
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-    const SceneBody& body = scene.bodies[i];
-    BodyDef def;
-    def.radius = scene.shapes[body.shape].radius;
-    def.shape = scene.shapes[body.shape].polyhedron;  // null for a sphere: refused
-    def.position = body.position;
-    def.orientation = body.orientation;
-    def.velocity = body.velocity;
-    def.angular_velocity = body.angular_velocity;
-    def.thrust = body.thrust;
-    def.mass = body.mass;
-    def.restitution = body.restitution;
-    def.friction = body.friction;
-    Result<BodyId> id = world.AddBody(def);
+    // A sphere has no polyhedron: AddBody refuses it.
+    Result<BodyId> id = world.AddBody(SceneBodyDef(scene, i));
     if (!id) return Error{"bodies[" + std::to_string(i) + "]: " + id.error().message};
   }
   return world;
 }
-
-// The packing fraction reported as "density": the scene's, or body volumes over the box's.
-double PackingOf(const SceneDescription& scene) {
-  if (scene.packing) return *scene.packing;
-  const Container& box = scene.settings.container;
-  if (box.kind == Container::Kind::kOpen) return 0.0;
-  double volume = 0;
-  for (const SceneBody& body : scene.bodies) volume += scene.shapes[body.shape].Volume();
-  return volume / (box.hi - box.lo).prod();
-}
-
-nlohmann::json VectorJson(const Vec3& v) { return {v[0], v[1], v[2]}; }
 
 nlohmann::json Summary(const SceneDescription& scene, const ConventionalWorld& world, double wall,
                        double energy_initial, const Vec3& momentum_initial) {

@@ -3,6 +3,7 @@
 
 #include "apps/cli/conventional_run.hpp"
 #include "apps/cli/run_options.hpp"
+#include "apps/cli/run_support.hpp"
 
 #include <unistd.h>
 
@@ -34,18 +35,6 @@ struct Setup {
   World world;
   double density = 0;  // packing fraction reported as "density"
 };
-
-nlohmann::json VectorJson(const Vec3& v) { return {v[0], v[1], v[2]}; }
-
-// The packing fraction of a scene that does not state one: body volumes over the box volume.
-double PackingOf(const SceneDescription& scene) {
-  if (scene.packing) return *scene.packing;
-  const Container& box = scene.settings.container;
-  if (box.kind == Container::Kind::kOpen) return 0.0;
-  double volume = 0;
-  for (const SceneBody& body : scene.bodies) volume += scene.shapes[body.shape].Volume();
-  return volume / (box.hi - box.lo).prod();
-}
 
 // The scene file or the preset, and its World; an Error names the bad option or file.
 Result<Setup> MakeSetup(const RunOptions& options) {
