@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: MIT
 // ContactFromFeatures: where two touching polyhedra touch, from their closest feature pair: a
 // point, or the overlap of parallel features projected on the contact plane (docs/dynamics.md).
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <span>
-
-#include <Eigen/Geometry>
 
 #include "dynamics/rigid_collision.hpp"
 
@@ -42,41 +40,52 @@ struct Side {
     return (Vertex(poly.edge(e).vertices[1]) - Vertex(poly.edge(e).vertices[0])).normalized();
   }
 
-  // The feature's vertices in the world: 1, 2 (an edge) or a face loop.
+  // Indices of a feature's vertices: 1, 2 (an edge) or a face loop.
+  std::vector<std::int32_t> VertexIndices(FeatureId f) const {
+    if (f.type == FeatureType::kVertex) return {f.index};
+    if (f.type == FeatureType::kEdge) {
+      return {poly.edge(f.index).vertices[0], poly.edge(f.index).vertices[1]};
+    }
+    const auto loop = poly.FaceVertices(f.index);
+    return {loop.begin(), loop.end()};
+  }
+
+  // The feature's vertices in the world.
   std::vector<Vec3> Points(FeatureId f) const {
     std::vector<Vec3> out;
-    if (f.type == FeatureType::kVertex) out.push_back(Vertex(f.index));
-    if (f.type == FeatureType::kEdge) {
-      for (const int v : poly.edge(f.index).vertices) out.push_back(Vertex(v));
-    }
-    if (f.type == FeatureType::kFace) {
-      for (const int v : poly.FaceVertices(f.index)) out.push_back(Vertex(v));
-    }
+    for (const int v : VertexIndices(f)) out.push_back(Vertex(v));
     return out;
   }
 
   // The feature's vertices and their neighbours: by convexity the polyhedron lies in the cone
   // they span from the feature, so a plane with all of them on one side has it all there.
   std::vector<Vec3> Neighbourhood() const {
-    std::vector<std::int32_t> vertices;
-    if (feature.type == FeatureType::kVertex) vertices = {feature.index};
-    if (feature.type == FeatureType::kEdge) {
-      vertices.assign(poly.edge(feature.index).vertices.begin(),
-                      poly.edge(feature.index).vertices.end());
-    }
-    if (feature.type == FeatureType::kFace) {
-      const auto loop = poly.FaceVertices(feature.index);
-      vertices.assign(loop.begin(), loop.end());
-    }
     std::vector<Vec3> out;
-    for (const int v : vertices) {
+    for (const int v : VertexIndices(feature)) {
       out.push_back(Vertex(v));
       for (const int e : poly.VertexEdges(v)) out.push_back(Vertex(poly.OtherVertex(e, v)));
     }
     return out;
   }
 
-  // The faces that contain the feature (itself for a face).
+  // The lowest-dimensional feature of this one that holds the witness point w (within
+  // `tolerance`): a face touched at its corner is a vertex contact, whose separating normals are
+  // bounded by the faces and edges around that corner, not by the face's.
+  FeatureId Narrowest(const Vec3& w, double tolerance) const {
+    if (feature.type == FeatureType::kVertex) return feature;
+    for (const int v : VertexIndices(feature)) {
+      if ((Vertex(v) - w).norm() <= tolerance) return FeatureId::Vertex(v);
+    }
+    if (feature.type == FeatureType::kEdge) return feature;
+    for (const int e : poly.FaceEdges(feature.index)) {
+      const Vec3 p0 = Vertex(poly.edge(e).vertices[0]), d = Vertex(poly.edge(e).vertices[1]) - p0;
+      const double t = std::clamp(d.dot(w - p0) / d.squaredNorm(), 0.0, 1.0);
+      if ((p0 + t * d - w).norm() <= tolerance) return FeatureId::Edge(e);
+    }
+    return feature;
+  }
+
+  // The faces that contain a vertex or an edge (none for a face: nothing is wider).
   std::span<const std::int32_t> Faces() const {
     if (feature.type == FeatureType::kVertex) return poly.VertexFaces(feature.index);
     if (feature.type == FeatureType::kEdge) return poly.edge(feature.index).faces;
@@ -96,8 +105,7 @@ struct Side {
   // as well, and gives the larger contact.
   FeatureId Widened(const Vec3& n, const Vec3& witness, double tolerance) const {
     for (const int f : Faces()) {
-      if (FaceAlong(f, n) &&
-          Flush(FeatureId::Face(f), n, witness, tolerance)) {
+      if (FaceAlong(f, n) && Flush(FeatureId::Face(f), n, witness, tolerance)) {
         return FeatureId::Face(f);
       }
     }
@@ -129,46 +137,83 @@ bool CrossingEdges(const Side& a, const Side& b) {
          std::sin(kParallelAngle);
 }
 
-// The normal from A towards B: a face's normal, else the crossing edges' cross product (turned
-// away from A's centroid), else the witness normal. Faces and edges keep it well defined when
-// the distance is ~0 or negative, where the witness points do not.
-Vec3 ContactNormal(const Side& a, const Side& b, const Vec3& witness_a, const Vec3& fallback) {
-  if (a.feature.type == FeatureType::kFace) return a.FaceNormal(a.feature.index);
-  if (b.feature.type == FeatureType::kFace) return -b.FaceNormal(b.feature.index);
-  if (CrossingEdges(a, b)) {
-    const Vec3 n =
-        a.EdgeDirection(a.feature.index).cross(b.EdgeDirection(b.feature.index)).normalized();
-    return n.dot(witness_a - a.X.ToWorld(a.poly.centroid())) >= 0.0 ? n : Vec3(-n);
-  }
-  return fallback;
-}
+// The contact normal (A towards B) must be a separating direction: the plane through A's
+// witness has A's feature and its neighbouring vertices below it and the plane through B's has
+// B's above (within `tolerance`). By convexity that separates the whole bodies.
+class NormalChooser {
+ public:
+  NormalChooser(const Side& a, const Side& b, const Vec3& wa, const Vec3& wb, double tolerance)
+      : near_a_(a.Neighbourhood()),
+        near_b_(b.Neighbourhood()),
+        wa_(wa),
+        wb_(wb),
+        tolerance_(tolerance) {}
 
-// Without a face or crossing edges in the pair, the witness normal is noise when the distance
-// is ~0: a face next to either feature whose plane has the other body on its far side (within
-// `tolerance`) is a true separating plane, and its normal is used instead.
-std::optional<Vec3> SeparatingFaceNormal(const Side& a, const Side& b, const Vec3& wa,
-                                         const Vec3& wb, double tolerance) {
-  auto separates = [&](const Side& other, const Vec3& n, const Vec3& origin) {
-    for (const Vec3& p : other.Neighbourhood()) {
-      if (n.dot(p - origin) < -tolerance) return false;
+  bool Separates(const Vec3& n) const {
+    for (const Vec3& p : near_a_) {
+      if (n.dot(p - wa_) > tolerance_) return false;
+    }
+    for (const Vec3& p : near_b_) {
+      if (n.dot(p - wb_) < -tolerance_) return false;
     }
     return true;
-  };
-  for (const int f : a.Faces()) {
-    if (separates(b, a.FaceNormal(f), wa)) return a.FaceNormal(f);
   }
-  for (const int f : b.Faces()) {
-    if (separates(a, b.FaceNormal(f), wb)) return Vec3(-b.FaceNormal(f));
+
+ private:
+  std::vector<Vec3> near_a_, near_b_;
+  Vec3 wa_, wb_;
+  double tolerance_;
+};
+
+// Edges that contain a vertex, an edge itself, or a face's boundary.
+std::vector<std::int32_t> Edges(const Side& side) {
+  const FeatureId f = side.feature;
+  if (f.type == FeatureType::kVertex) {
+    const auto ring = side.poly.VertexEdges(f.index);
+    return {ring.begin(), ring.end()};
   }
-  return std::nullopt;
+  if (f.type == FeatureType::kEdge) return {f.index};
+  const auto loop = side.poly.FaceEdges(f.index);
+  return {loop.begin(), loop.end()};
+}
+
+// The first separating normal of, best first: a face of the pair, the walk's normal, a face
+// next to either feature, the cross product of two edges at the features (every extreme
+// direction of the cone of separating normals is one of the last two). When the distance is ~0
+// the walk may name a face that touches only at its boundary and its witness normal is noise,
+// so every candidate is checked. None separates only for a deep penetration: the walk's normal.
+Vec3 SeparatingNormal(const Side& a, const Side& b, const Vec3& wa, const Vec3& wb,
+                      const Vec3& walk_normal, double tolerance) {
+  const NormalChooser chooser(a, b, wa, wb, tolerance);
+  std::vector<Vec3> candidates;
+  if (a.feature.type == FeatureType::kFace) candidates.push_back(a.FaceNormal(a.feature.index));
+  if (b.feature.type == FeatureType::kFace) candidates.push_back(-b.FaceNormal(b.feature.index));
+  candidates.push_back(walk_normal);
+  for (const int f : a.Faces()) candidates.push_back(a.FaceNormal(f));
+  for (const int f : b.Faces()) candidates.push_back(-b.FaceNormal(f));
+  for (const Vec3& n : candidates) {
+    if (chooser.Separates(n)) return n;
+  }
+  for (const int ea : Edges(a)) {
+    for (const int eb : Edges(b)) {
+      const Vec3 cross = a.EdgeDirection(ea).cross(b.EdgeDirection(eb));
+      if (cross.norm() <= std::sin(kParallelAngle)) continue;
+      const Vec3 n = cross.normalized();
+      if (chooser.Separates(n)) return n;
+      if (chooser.Separates(-n)) return -n;
+    }
+  }
+  return walk_normal;
 }
 
 // Sutherland & Hodgman 1974: clips `subject` (a polygon, or a segment as 2 points) by the
 // convex polygon `clip` of either orientation, grown by `slack` so that features that only
-// touch along a line (within the tolerance) still give that line.
+// touch along a line (up to round-off) still give that line.
 std::vector<Vec2> Clip(std::vector<Vec2> subject, const std::vector<Vec2>& clip, double slack) {
   double area = 0.0;
-  for (std::size_t i = 0; i < clip.size(); ++i) area += Cross2(clip[i], clip[(i + 1) % clip.size()]);
+  for (std::size_t i = 0; i < clip.size(); ++i) {
+    area += Cross2(clip[i], clip[(i + 1) % clip.size()]);
+  }
   const double orientation = area >= 0.0 ? 1.0 : -1.0;
   const bool segment = subject.size() == 2;
   for (std::size_t i = 0; i < clip.size() && !subject.empty(); ++i) {
@@ -235,20 +280,23 @@ ContactGeometry ContactFromFeatures(const ConvexPolyhedron& a, const Pose& X_WA,
   ContactGeometry out;
   out.distance = features.distance;
 
-  // Widen each feature to a parallel, flush neighbour; a face found on A fixes the normal that
-  // B is widened against, and the other way round.
-  Vec3 n = ContactNormal(side_a, side_b, wa, features.normal);
-  if (side_a.feature.type != FeatureType::kFace && side_b.feature.type != FeatureType::kFace &&
-      !CrossingEdges(side_a, side_b)) {
-    n = SeparatingFaceNormal(side_a, side_b, wa, wb, tolerance).value_or(n);
+  // The features that really hold the witness points: their neighbourhoods bound the normal.
+  side_a.feature = side_a.Narrowest(wa, tolerance);
+  side_b.feature = side_b.Narrowest(wb, tolerance);
+
+  // A separating normal first; then each feature widens to a parallel, flush neighbour, and a
+  // face found fixes the normal exactly (it is within kParallelAngle of it).
+  Vec3 n = SeparatingNormal(side_a, side_b, wa, wb, features.normal, tolerance);
+  side_a.feature = side_a.Widened(n, wa, tolerance);
+  if (side_a.Flat(n) && side_a.feature.type == FeatureType::kFace) {
+    n = side_a.FaceNormal(side_a.feature.index);
   }
-  side_a.feature = side_a.Widened(n, wa, tolerance);
-  n = ContactNormal(side_a, side_b, wa, n);
   side_b.feature = side_b.Widened(-n, wb, tolerance);
-  n = ContactNormal(side_a, side_b, wa, n);
-  side_a.feature = side_a.Widened(n, wa, tolerance);
-  out.normal = ContactNormal(side_a, side_b, wa, n);
-  n = out.normal;
+  if (side_b.Flat(-n) && side_b.feature.type == FeatureType::kFace &&
+      side_a.feature.type != FeatureType::kFace) {
+    n = -side_b.FaceNormal(side_b.feature.index);
+  }
+  out.normal = n;
 
   // Point contacts (a vertex, crossing edges, a feature not parallel to the plane): the
   // midpoint of the witness points.

@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 // ApplyRigidImpulse (thesis §6): the collision impulse of two rigid bodies with rotation, Newton
 // restitution and Coulomb friction at impact; a region gets a few impulses (docs/dynamics.md).
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 #include <utility>
-
-#include <Eigen/Dense>
 
 #include "dynamics/rigid_collision.hpp"
 
@@ -98,7 +97,8 @@ PointImpulse FrictionImpulse(const Eigen::Matrix3d& k, const Vec3& u, const Vec3
     // qa s^2 + qb s + qc = 0 with qa > 0, qc <= 0: the positive root, stable form.
     const double root = std::sqrt(std::max(qb * qb - 4.0 * qa * qc, 0.0));
     const double s = qb >= 0.0 ? (-2.0 * qc) / (qb + root) : (root - qb) / (2.0 * qa);
-    out.impulse = frictionless + std::clamp(s, 0.0, 1.0) * delta;
+    // qa = 0 only when friction changed nothing, so the gain was round-off.
+    out.impulse = qa > 0.0 ? Vec3(frictionless + std::clamp(s, 0.0, 1.0) * delta) : frictionless;
   }
   return out;
 }
@@ -138,9 +138,10 @@ RigidImpulseResult ApplyRigidImpulse(RigidBodyState& a, RigidBodyState& b,
                                      const ContactGeometry& contact,
                                      const RigidImpulseOptions& options) {
   RigidImpulseResult result;
-  if (contact.points.empty()) return result;
+  // Two static bodies cannot exchange an impulse (K = 0).
+  if (contact.points.empty() || a.inv_mass + b.inv_mass <= 0.0) return result;
   const Vec3& n = contact.normal;
-  double weighted_point_sum_norm = 0.0;
+  double point_weight = 0.0;
   Vec3 weighted_point = Vec3::Zero();
   double threshold = 0.0;
 
@@ -150,14 +151,15 @@ RigidImpulseResult ApplyRigidImpulse(RigidBodyState& a, RigidBodyState& b,
   double un = RelativeVelocity(a, b, p).dot(n);
   if (!(un < 0.0)) std::tie(p, un) = MostApproaching(a, b, contact.points, n);
   while (un < -threshold && result.rounds < kMaxRounds) {
+    // The guard applies to every round: the slow rounds after the first are what would
+    // otherwise collapse; `guarded` then reports that any round was made elastic.
     double e = options.restitution;
     if (-un < options.elastic_below_speed && e < 1.0) {
       e = 1.0;
       result.guarded = true;
     }
     const Eigen::Matrix3d k = CollisionMatrix(a, b, p);
-    const PointImpulse j =
-        FrictionImpulse(k, RelativeVelocity(a, b, p), n, e, options.friction);
+    const PointImpulse j = FrictionImpulse(k, RelativeVelocity(a, b, p), n, e, options.friction);
     Apply(a, b, p, j.impulse);
     if (result.rounds == 0) threshold = kRoundSpeedFraction * -un;
     ++result.rounds;
@@ -166,11 +168,11 @@ RigidImpulseResult ApplyRigidImpulse(RigidBodyState& a, RigidBodyState& b,
     const double jn = j.impulse.dot(n);
     result.normal_impulse += jn;
     weighted_point += jn * p;
-    weighted_point_sum_norm += jn;
+    point_weight += jn;
     if (contact.points.size() == 1) break;
     std::tie(p, un) = MostApproaching(a, b, contact.points, n);
   }
-  if (weighted_point_sum_norm > 0.0) result.point = weighted_point / weighted_point_sum_norm;
+  if (point_weight > 0.0) result.point = weighted_point / point_weight;
   return result;
 }
 

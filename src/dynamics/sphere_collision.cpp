@@ -3,9 +3,8 @@
 
 namespace sparsedyn {
 
-ImpulseResult SphereImpulse(const Vec3& v_a, const Vec3& v_b, double inv_mass_a,
-                            double inv_mass_b, const Vec3& normal, double restitution,
-                            double elastic_below_speed) {
+ImpulseResult SphereImpulse(const Vec3& v_a, const Vec3& v_b, double inv_mass_a, double inv_mass_b,
+                            const Vec3& normal, double restitution, double elastic_below_speed) {
   ImpulseResult result{v_a, v_b, 0.0, false};
   // Relative normal velocity u = (v_b - v_a).n; approaching when u < 0.
   const double u = (v_b - v_a).dot(normal);

@@ -3,9 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "narrow/advancement.hpp"
+#include "narrow/pair_frame.hpp"
 #include "narrow/zone_events.hpp"
+#include "sparsedyn/assert.hpp"
 
 namespace sparsedyn {
 namespace {
@@ -16,12 +19,6 @@ namespace {
 // the conservative side), far below the 1e-9 accuracy the tests ask for.
 constexpr double kZoneSlack = 1e-10;
 constexpr double kContactRoundOff = 1e-12;
-
-// Largest distance of a body point from its frame origin (the point the path moves and the
-// rotation turns about): the centroid's offset plus the bounding radius about the centroid.
-double RadiusAboutOrigin(const ConvexPolyhedron& poly) {
-  return poly.centroid().norm() + poly.bounding_radius();
-}
 
 // B's translation relative to A at time t, in A's frame (positions subtracted before rotating).
 narrow::RelativeTranslation RelativeMotion(const RigidPath& path_a, const RigidPath& path_b,
@@ -35,18 +32,58 @@ narrow::RelativeTranslation RelativeMotion(const RigidPath& path_a, const RigidP
   return m;
 }
 
-// One conservative-advancement step from the separating plane through the closest points
-// (normal n from A to B, gap d): A's points move towards +n at most at v_A . n + |n x w_A| r_A
-// (since (w x r) . n = r . (n x w)), B's towards -n likewise, and the accelerations add
-// (a_A - a_B) . n per second. No contact can occur before the bound has closed d - target.
-std::optional<double> PairAdvancement(const ClosestFeatures& cf, const RigidPath& path_a,
-                                      double r_a, const RigidPath& path_b, double r_b, double t,
-                                      double target, double horizon) {
+// How far A (at X_WA) and B (at X_WB) are apart along the unit world direction n, from their
+// support vertices (in A's frame, for precision). The walk's normal may be off the true one by
+// a little when its pair is one of several almost equally close ones; this separation is valid
+// for any n, so the advancement below never depends on that normal being exact.
+double SeparationAlong(const ConvexPolyhedron& pa, const Pose& X_WA, const ConvexPolyhedron& pb,
+                       const Pose& X_WB, const Vec3& n) {
+  const narrow::PairFrame frame(X_WA, X_WB);
+  const Vec3 n_A = X_WA.rotation.normalized().conjugate() * n;
+  const Vec3 n_B = frame.R_AB.transpose() * n_A;
+  const double top_a = n_A.dot(pa.vertex(pa.SupportVertex(n_A)));
+  return n_A.dot(frame.ToA(pb.vertex(pb.SupportVertex(-n_B)))) - top_a;
+}
+
+// One conservative-advancement step; every bound below is valid, so the longest step is too.
+// (1) The separating slab along the walk's normal n (A to B): A's points move towards +n at
+// most at v_A . n + |n x w_A| r_A (r_A its SpinRadius), B's towards -n likewise, and the
+// accelerations add (a_A - a_B) . n per second. (2) The same with the spin part bounded by
+// SpinRateAlong (support extent now, growing with the turn). (3) The distance itself changes at
+// most at |v_B - v_A| + |w_A| r_A + |w_B| r_B, plus |a_B - a_A| per second.
+std::optional<double> PairAdvancement(const ConvexPolyhedron& pa, const RigidPath& path_a,
+                                      double r_a, const ConvexPolyhedron& pb,
+                                      const RigidPath& path_b, double r_b,
+                                      const ClosestFeatures& cf, double t, double target,
+                                      double horizon) {
   const Vec3& n = cf.normal;
-  const double speed = (path_a.centre.VelocityAt(t) - path_b.centre.VelocityAt(t)).dot(n) +
-                       n.cross(path_a.omega).norm() * r_a + n.cross(path_b.omega).norm() * r_b;
-  const double accel = (path_a.centre.a - path_b.centre.a).dot(n);
-  return narrow::AdvancementStep(cf.distance - target, speed, accel, horizon);
+  const Vec3 dv = path_a.centre.VelocityAt(t) - path_b.centre.VelocityAt(t);
+  const Vec3 da = path_a.centre.a - path_b.centre.a;
+  const std::optional<double> lipschitz = narrow::AdvancementStep(
+      cf.distance - target, dv.norm() + path_a.omega.norm() * r_a + path_b.omega.norm() * r_b,
+      da.norm(), horizon);
+  const Pose X_WA = path_a.PoseAt(t), X_WB = path_b.PoseAt(t);
+  const double slab = SeparationAlong(pa, X_WA, pb, X_WB, n) - target;
+  if (!lipschitz || slab <= 0.0) return lipschitz;
+  const std::optional<double> plain = narrow::AdvancementStep(
+      slab, dv.dot(n) + n.cross(path_a.omega).norm() * r_a + n.cross(path_b.omega).norm() * r_b,
+      da.dot(n), horizon);
+  if (!plain) return std::nullopt;
+  const narrow::SpinRate spin_a = narrow::SpinRateAlong(pa, X_WA, path_a.omega, n, r_a);
+  const narrow::SpinRate spin_b = narrow::SpinRateAlong(pb, X_WB, path_b.omega, -n, r_b);
+  const std::optional<double> turning =
+      narrow::AdvancementStep(slab, dv.dot(n) + spin_a.now + spin_b.now,
+                              da.dot(n) + spin_a.growth + spin_b.growth, horizon);
+  if (!turning) return std::nullopt;
+  return std::max({*plain, *turning, *lipschitz});
+}
+
+// No contact ever (t_end = infinity and none within kMaxHorizon): kNone at t_end, with the
+// features of the last time evaluated.
+ContactPrediction NoneForever(ContactPrediction out, double t_end) {
+  out.kind = ContactPrediction::Kind::kNone;
+  out.time = t_end;
+  return out;
 }
 
 }  // namespace
@@ -58,20 +95,31 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
   const ConvexPolyhedron& pa = a.polyhedron();
   const ConvexPolyhedron& pb = b.polyhedron();
   const double scale = std::max(pa.scale(), pb.scale());
+  SPARSEDYN_ASSERT(std::isfinite(t_begin) && t_begin <= t_end,
+                   "PredictContact needs t_begin finite and <= t_end");
+  SPARSEDYN_ASSERT(options.tolerance > 0.0, "PredictContact needs a tolerance > 0");
+  SPARSEDYN_ASSERT(options.advancement_target > 0.0 && options.advancement_target < 1.0,
+                   "advancement_target must lie in (0, 1)");
   const double tol = options.tolerance;
   const bool translating = !path_a.Rotates() && !path_b.Rotates();
   // Rotating pairs step towards a gap below the tolerance so that they reach it in few steps.
   const double target = translating ? tol : options.advancement_target * tol;
-  const double r_a = RadiusAboutOrigin(pa), r_b = RadiusAboutOrigin(pb);
+  const double r_a = narrow::SpinRadius(pa, path_a), r_b = narrow::SpinRadius(pb, path_b);
 
   ContactPrediction out;
   double t = t_begin;
   bool contact_predicted = false;
+  double retried_at = -std::numeric_limits<double>::infinity();
   std::optional<FeaturePair> start = warm;
   while (true) {
     out.time = t;
-    out.features = FindClosestFeatures(a, path_a.PoseAt(t), b, path_b.PoseAt(t), start,
-                                       options.walk);
+    out.features =
+        FindClosestFeatures(a, path_a.PoseAt(t), b, path_b.PoseAt(t), start, options.walk);
+    // A warm walk that hit its cap holds no answer: start over cold.
+    if (out.features.status == ClosestFeatures::Status::kIterationCap) {
+      out.features =
+          FindClosestFeatures(a, path_a.PoseAt(t), b, path_b.PoseAt(t), std::nullopt, options.walk);
+    }
     start = out.features.features;
     const double accepted = contact_predicted ? tol + kContactRoundOff * scale : tol;
     if (out.features.distance <= accepted) {
@@ -88,7 +136,7 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
     }
     ++out.iterations;
     contact_predicted = false;
-    const double horizon = t_end - t;
+    const double horizon = std::min(t_end - t, narrow::kMaxHorizon);
 
     // Translating: the next zone event of the current pair, exact up to round-off.
     if (translating) {
@@ -99,12 +147,21 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
           X_WA.ToBody(out.features.point_b), tol, horizon, kZoneSlack * scale);
       const double next_t =
           event.kind == narrow::ZoneEvent::Kind::kNone ? t_end : std::min(t + event.dt, t_end);
-      // An exit that does not move the clock (dt below an ulp of t) could alternate between
-      // two pairs on a zone plane: advance conservatively instead.
-      const bool stalled = event.kind == narrow::ZoneEvent::Kind::kExit && next_t <= t;
+      // A witness on (or, by round-off, just over) a zone plane exits at once: the pair across
+      // that plane is closest too, or better, so retry from it once at the same time (the walk
+      // keeps a nearly-as-close pair within its round-off). A second stall at this time, or a
+      // degenerate pair, is left to conservative advancement.
+      const bool stalled =
+          (event.kind == narrow::ZoneEvent::Kind::kExit && next_t <= t) || event.stalled;
+      if (stalled && retried_at != t) {
+        retried_at = t;
+        start = event.next;
+        continue;
+      }
       if (event.kind != narrow::ZoneEvent::Kind::kUnsupported && !stalled) {
         contact_predicted = event.kind == narrow::ZoneEvent::Kind::kContact;
         if (event.kind == narrow::ZoneEvent::Kind::kExit) start = event.next;
+        if (!std::isfinite(next_t)) return NoneForever(out, t_end);
         t = next_t;
         continue;
       }
@@ -113,8 +170,9 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
 
     // Rotating (or a degenerate translating pair): conservative advancement.
     const std::optional<double> step =
-        PairAdvancement(out.features, path_a, r_a, path_b, r_b, t, target, horizon);
+        PairAdvancement(pa, path_a, r_a, pb, path_b, r_b, out.features, t, target, horizon);
     t = step ? std::min(t + *step, t_end) : t_end;
+    if (!std::isfinite(t)) return NoneForever(out, t_end);
   }
 }
 

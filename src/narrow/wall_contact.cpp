@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // PredictWallContact (header narrow/time_of_contact.hpp): a polyhedron against a static plane.
 #include <algorithm>
+#include <cmath>
 
 #include "math/roots.hpp"
 #include "narrow/advancement.hpp"
 #include "narrow/time_of_contact.hpp"
+#include "sparsedyn/assert.hpp"
 
 namespace sparsedyn {
 namespace {
@@ -36,6 +38,9 @@ WallContactPrediction Finish(ContactPrediction::Kind kind, double t, Nearest nea
 WallContactPrediction PredictWallContact(const ConvexPolyhedron& polyhedron, const RigidPath& path,
                                          const Vec3& normal, double offset, double t_begin,
                                          double t_end, double tolerance, int max_iterations) {
+  SPARSEDYN_ASSERT(std::isfinite(t_begin) && t_begin <= t_end,
+                   "PredictWallContact needs t_begin finite and <= t_end");
+  SPARSEDYN_ASSERT(tolerance > 0.0, "PredictWallContact needs a tolerance > 0");
   using Kind = ContactPrediction::Kind;
   Nearest nearest = NearestVertex(polyhedron, path.PoseAt(t_begin), normal, offset);
   if (nearest.gap <= tolerance) return Finish(Kind::kContact, t_begin, nearest, 0);
@@ -43,28 +48,38 @@ WallContactPrediction PredictWallContact(const ConvexPolyhedron& polyhedron, con
   // Not rotating: the nearest vertex stays the nearest, and its gap is a polynomial in time:
   // n . (c(t) + R v) - offset = gap0 + (n . v0) dt + (n . a) dt^2 / 2.
   if (!path.Rotates()) {
-    const double horizon = t_end - t_begin;
+    const double horizon = std::min(t_end - t_begin, narrow::kMaxHorizon);
     const Polynomial gap{nearest.gap - tolerance, normal.dot(path.centre.VelocityAt(t_begin)),
                          0.5 * normal.dot(path.centre.a)};
     const std::optional<double> dt = EarliestRoot(gap, 0.0, horizon);
     const double t = dt ? std::min(t_begin + *dt, t_end) : t_end;
+    if (!std::isfinite(t)) return Finish(Kind::kNone, t, nearest, 1);  // the gap at t_begin
     nearest = NearestVertex(polyhedron, path.PoseAt(t), normal, offset);
     return Finish(dt ? Kind::kContact : Kind::kNone, t, nearest, 1);
   }
 
-  // Rotating: conservative advancement. A body point at distance <= r from the path's centre
-  // moves towards the wall at most at -(v . n) + |n x w| r, since (w x r) . n = r . (n x w).
-  const double radius = polyhedron.centroid().norm() + polyhedron.bounding_radius();
-  const double spin = normal.cross(path.omega).norm() * radius;
+  // Rotating: conservative advancement. A body point moves towards the wall at most at
+  // -(v . n) + |n x w| r, with r the SpinRadius (distance from the spin axis), or at the
+  // SpinRateAlong(-n) bound; both are valid, so the longer step is taken.
+  const double spin_radius = narrow::SpinRadius(polyhedron, path);
+  const double spin = normal.cross(path.omega).norm() * spin_radius;
   double t = t_begin;
   for (int iteration = 0;; ++iteration) {
     if (nearest.gap <= tolerance) return Finish(Kind::kContact, t, nearest, iteration);
     if (t >= t_end) return Finish(Kind::kNone, t, nearest, iteration);
     if (iteration >= max_iterations) return Finish(Kind::kCheckpoint, t, nearest, iteration);
-    const std::optional<double> dt = narrow::AdvancementStep(
-        nearest.gap - kWallAdvancementTarget * tolerance,
-        spin - normal.dot(path.centre.VelocityAt(t)), -normal.dot(path.centre.a), t_end - t);
-    t = dt ? std::min(t + *dt, t_end) : t_end;
+    const double closable = nearest.gap - kWallAdvancementTarget * tolerance;
+    const double speed = -normal.dot(path.centre.VelocityAt(t));
+    const double accel = -normal.dot(path.centre.a);
+    const double horizon = std::min(t_end - t, narrow::kMaxHorizon);
+    const std::optional<double> plain =
+        narrow::AdvancementStep(closable, speed + spin, accel, horizon);
+    const narrow::SpinRate rate =
+        narrow::SpinRateAlong(polyhedron, path.PoseAt(t), path.omega, -normal, spin_radius);
+    const std::optional<double> turning =
+        narrow::AdvancementStep(closable, speed + rate.now, accel + rate.growth, horizon);
+    t = plain && turning ? std::min(t + std::max(*plain, *turning), t_end) : t_end;
+    if (!std::isfinite(t)) return Finish(Kind::kNone, t, nearest, iteration + 1);
     nearest = NearestVertex(polyhedron, path.PoseAt(t), normal, offset);
   }
 }

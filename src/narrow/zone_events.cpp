@@ -2,6 +2,7 @@
 #include "narrow/zone_events.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "math/roots.hpp"
@@ -127,12 +128,21 @@ std::optional<Witnesses> BuildWitnesses(const ConvexPolyhedron& a, const ConvexP
   return w;
 }
 
+// True when p (degree <= 2) certainly stays positive on [0, limit]: its constant term beats
+// every term that could pull it down, with a margin for the rounding of this very test. Saves
+// the certified root isolation for the many zone planes that the witness is nowhere near.
+bool StaysPositive(const Polynomial& p, double limit) {
+  const double c0 = p.Coefficient(0), c1 = p.Coefficient(1) * limit,
+               c2 = p.Coefficient(2) * limit * limit;
+  const double low = c0 + std::min(c1, 0.0) + std::min(c2, 0.0);
+  return p.Degree() <= 2 && low > 1e-12 * (std::abs(c0) + std::abs(c1) + std::abs(c2));
+}
+
 // The earliest dt in [0, limit) at which witness w leaves the zone of feature f of `poly`, whose
 // planes map into A's frame by x -> R x (+ shift, already folded into w); `next` gets the pair
 // across the plane (the neighbour replaces the feature on this side). Returns limit if none.
 double EarliestExit(const ConvexPolyhedron& poly, FeatureId f, const Eigen::Matrix3d& R,
-                    const PolyVec3& w, double slack, double limit, bool side_a,
-                    FeaturePair& next) {
+                    const PolyVec3& w, double slack, double limit, bool side_a, FeaturePair& next) {
   double best = limit;
   for (const VoronoiPlane& vp : poly.VoronoiPlanes(f)) {
     // A face's own plane bounds the zone towards the interior: crossing it is contact, which
@@ -141,8 +151,10 @@ double EarliestExit(const ConvexPolyhedron& poly, FeatureId f, const Eigen::Matr
     const Polynomial g = Dot(R * vp.plane.normal, w) - Polynomial{vp.plane.offset - slack};
     if (g(0.0) < 0.0) {  // already outside by more than the slack
       best = 0.0;
+      (side_a ? next.a : next.b) = vp.neighbor;
       break;
     }
+    if (StaysPositive(g, best)) continue;
     const std::optional<double> root = EarliestRoot(g, 0.0, best);
     if (root && *root < best) {
       best = *root;
@@ -155,16 +167,13 @@ double EarliestExit(const ConvexPolyhedron& poly, FeatureId f, const Eigen::Matr
 }  // namespace
 
 ZoneEvent NextZoneEvent(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
-                        const RelativeTranslation& motion, FeaturePair pair,
-                        const Vec3& point_a_A, const Vec3& point_b_A, double tolerance,
-                        double horizon, double slack) {
+                        const RelativeTranslation& motion, FeaturePair pair, const Vec3& point_a_A,
+                        const Vec3& point_b_A, double tolerance, double horizon, double slack) {
   ZoneEvent event;
   // Pairs of a face with a face or edge, and parallel edges, are reduced to where the walk put
   // the witnesses.
-  const bool has_face =
-      pair.a.type == FeatureType::kFace || pair.b.type == FeatureType::kFace;
-  const bool has_edge =
-      pair.a.type == FeatureType::kEdge || pair.b.type == FeatureType::kEdge;
+  const bool has_face = pair.a.type == FeatureType::kFace || pair.b.type == FeatureType::kFace;
+  const bool has_edge = pair.a.type == FeatureType::kEdge || pair.b.type == FeatureType::kEdge;
   const bool both_faces = pair.a.type == FeatureType::kFace && pair.b.type == FeatureType::kFace;
   if ((has_face && has_edge) || both_faces ||
       (pair.a.type == FeatureType::kEdge && pair.b.type == FeatureType::kEdge &&
@@ -198,6 +207,7 @@ ZoneEvent NextZoneEvent(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
     event.dt = *contact;
   } else if (exit <= 0.0) {
     event.kind = ZoneEvent::Kind::kUnsupported;
+    event.stalled = true;
   } else if (exit < horizon) {
     event.kind = ZoneEvent::Kind::kExit;
     event.dt = exit;

@@ -33,6 +33,8 @@ struct ZoneEvent {
   Kind kind = Kind::kUnsupported;
   double dt = 0.0;
   FeaturePair next;
+  bool stalled = false;  // kUnsupported because a witness is already over a zone plane by more
+                         // than the slack; `next` is the pair across that plane
 };
 
 /// The next zone event of the closest pair `pair` (as FindClosestFeatures reported it, with its
@@ -40,8 +42,7 @@ struct ZoneEvent {
 /// a witness may stray over a zone plane before it counts as an exit: it keeps a witness that
 /// sits on a plane (just after an exit, or parallel features) from stalling the prediction.
 ZoneEvent NextZoneEvent(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
-                        const RelativeTranslation& motion, FeaturePair pair,
-                        const Vec3& point_a_A, const Vec3& point_b_A, double tolerance,
-                        double horizon, double slack);
+                        const RelativeTranslation& motion, FeaturePair pair, const Vec3& point_a_A,
+                        const Vec3& point_b_A, double tolerance, double horizon, double slack);
 
 }  // namespace sparsedyn::narrow

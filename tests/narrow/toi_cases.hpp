@@ -36,8 +36,8 @@ struct MotionCase {
     out.precision(17);
     auto path = [&](const RigidPath& p) {
       out << "{p0 = (" << p.centre.p0.transpose() << "), v0 = (" << p.centre.v0.transpose()
-          << "), a = (" << p.centre.a.transpose() << "), t0 = " << p.t0() << ", q0 = ("
-          << p.q0.w() << " " << p.q0.x() << " " << p.q0.y() << " " << p.q0.z() << "), omega = ("
+          << "), a = (" << p.centre.a.transpose() << "), t0 = " << p.t0() << ", q0 = (" << p.q0.w()
+          << " " << p.q0.x() << " " << p.q0.y() << " " << p.q0.z() << "), omega = ("
           << p.omega.transpose() << ")}";
     };
     out << a->name << " on ";
@@ -55,11 +55,14 @@ class MotionCaseGenerator {
  public:
   explicit MotionCaseGenerator(std::uint64_t seed) : pairs_(seed) {
     for (const int faces : {4, 6, 9, 14, 20, 32, 48, 80, 120}) {
-      shapes_.push_back(MakeShape("random hull F=" + std::to_string(faces),
-                                  *RandomConvexPolyhedron(faces, 700 + static_cast<unsigned>(faces))));
+      shapes_.push_back(
+          MakeShape("random hull F=" + std::to_string(faces),
+                    *RandomConvexPolyhedron(faces, 700 + static_cast<unsigned>(faces))));
     }
+    aligned_first_ = shapes_.size();
     shapes_.push_back(MakeShape("cube", *MakeBox({0.5, 0.5, 0.5})));
     shapes_.push_back(MakeShape("box 3x1x1", *MakeBox({0.75, 0.25, 0.25})));
+    shapes_.push_back(MakeShape("prism 8", *MakePrism(8, 0.5, 0.4)));
     shapes_.push_back(MakeShape("slab", *MakeSlab(1.5, 200.0)));
     shapes_.push_back(MakeShape("needle", *MakeNeedle(1.5, 200.0)));
     shapes_.push_back(MakeShape("cigar", *RandomEllipsoidalPolyhedron(30, {0.4, 0.4, 1.2}, 7)));
@@ -91,11 +94,43 @@ class MotionCaseGenerator {
                          (c.t_begin - t0) * c.path_b.centre.v0;
     if (accelerate && Uniform() < 0.5) {
       c.path_a.centre.a = pairs_.RandomUnit() * Uniform();
-      c.path_b.centre.a = Uniform() < 0.3 ? c.path_a.centre.a : Vec3(pairs_.RandomUnit() * 2.0 * Uniform());
+      c.path_b.centre.a =
+          Uniform() < 0.3 ? c.path_a.centre.a : Vec3(pairs_.RandomUnit() * 2.0 * Uniform());
       c.path_b.centre.p0 -= 0.5 * (c.t_begin - t0) * (c.t_begin - t0) * c.path_b.centre.a -
                             0.5 * (c.t_begin - t0) * (c.t_begin - t0) * c.path_a.centre.a;
     }
     c.t_end = c.t_begin + 2.5 * (distance + reach) / speed;
+    return c;
+  }
+
+  // Degenerate translating pairs: boxes and prisms with a common orientation, or turned about
+  // their common z axis by multiples of 45 degrees (parallel faces and parallel edges), B
+  // starting 0.5-2 away along a random axis with a lateral offset on a 1/4 grid and moving
+  // straight back along that axis, sometimes with a lateral drift on the same grid.
+  MotionCase AlignedPair() {
+    MotionCase c;
+    c.a = &shapes_[aligned_first_ + pairs_.rng()() % (shapes_.size() - aligned_first_)];
+    c.b = &shapes_[aligned_first_ + pairs_.rng()() % (shapes_.size() - aligned_first_)];
+    const Eigen::Quaterniond common = pairs_.RandomRotation();
+    auto turn = [&] {
+      return common * Eigen::Quaterniond(Eigen::AngleAxisd(
+                          M_PI / 4 * static_cast<double>(pairs_.rng()() % 8), Vec3::UnitZ()));
+    };
+    c.path_a.q0 = turn();
+    c.path_b.q0 = pairs_.rng()() % 2 ? c.path_a.q0 : turn();
+    const int axis = static_cast<int>(pairs_.rng()() % 3);
+    auto grid = [&] {
+      return 0.25 * static_cast<double>(static_cast<int>(pairs_.rng()() % 9) - 4);
+    };
+    Vec3 offset(grid(), grid(), grid());
+    offset[axis] = (pairs_.rng()() % 2 ? 1.0 : -1.0) *
+                   (MotionCase::Radius(*c.a) + MotionCase::Radius(*c.b) + 0.5 + 1.5 * Uniform());
+    Vec3 velocity = Vec3::Zero();
+    velocity[axis] = -offset[axis] / (1.0 + Uniform());
+    if (pairs_.rng()() % 2) velocity[(axis + 1) % 3] = grid();
+    c.path_b.centre.p0 = common * offset;
+    c.path_b.centre.v0 = common * velocity;
+    c.t_end = 3.0;
     return c;
   }
 
@@ -135,6 +170,7 @@ class MotionCaseGenerator {
 
   PairGenerator pairs_;
   std::vector<Shape> shapes_;
+  std::size_t aligned_first_ = 0;  // boxes, prisms, slab and needle: the aligned pairs' shapes
 };
 
 }  // namespace sparsedyn::testing

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <limits>
 
@@ -19,31 +20,44 @@ namespace sparsedyn::testing {
 
 // Contact tolerance of the random cases (their polyhedra have radii 0.1-1.5 m).
 inline constexpr double kToiTolerance = 1e-4;
-// Translating predictions are exact: allowed time error (s) for cases that last ~1-20 s.
-inline constexpr double kToiTimeError = 1e-9;
+// Translating predictions are exact: allowed time error (s) for cases that last ~1-20 s at
+// speeds ~1 m/s (issue's bound: 1e-9 x the scene scale; measured: 2.3e-12 s on aligned boxes,
+// 6e-15 s on random pairs).
+inline constexpr double kToiTimeError = 1e-10;
 // The oracle's smallest sampling step as a fraction of the case's duration.
 inline constexpr double kOracleMinStep = 2e-6;
 
 struct ToiFigures {
   int cases = 0, contacts = 0, oracle_contacts = 0;
   int missed = 0, late = 0, mismatched = 0, too_far = 0;
-  double max_time_error = 0.0;         // translating: |predicted - oracle|
-  double max_contact_distance = 0.0;   // largest distance at a returned contact / tolerance
+  double max_time_error = 0.0;        // translating: |predicted - oracle|
+  double max_contact_distance = 0.0;  // largest distance at a returned contact / tolerance
   long iterations = 0;
   int max_iterations = 0, checkpoints = 0, advancement_steps = 0;
   long oracle_samples = 0;
+  double prediction_seconds = 0.0;  // CPU time in the predictions (printed, never asserted)
 
+  // Cases that break a guarantee: missed, late, too far at contact, and (exact predictions
+  // only) a time off the oracle's.
+  int Errors(bool exact) const { return missed + late + too_far + (exact ? mismatched : 0); }
   double MeanIterations() const { return cases ? static_cast<double>(iterations) / cases : 0.0; }
   void Print(const char* what) const {
     std::printf(
         "[toi] %s: %d cases, %d contacts (oracle %d), missed %d, late %d, mismatched %d, "
         "max time error %.3g s, max distance at contact %.6g tol, iterations mean %.2f max %d, "
-        "checkpoints %d, fallback advancement steps %d, oracle samples %ld\n",
+        "checkpoints %d, fallback advancement steps %d, oracle samples %ld, %.2f us per "
+        "prediction\n",
         what, cases, contacts, oracle_contacts, missed, late, mismatched, max_time_error,
         max_contact_distance, MeanIterations(), max_iterations, checkpoints, advancement_steps,
-        oracle_samples);
+        oracle_samples, cases ? 1e6 * prediction_seconds / cases : 0.0);
   }
 };
+
+// Prints the figures (the log line the docs quote) and fails on any broken guarantee.
+inline void ExpectNoErrors(const ToiFigures& f, const char* what, bool exact) {
+  f.Print(what);
+  EXPECT_EQ(f.Errors(exact), 0) << what;
+}
 
 // The prediction resumed after each checkpoint, as the World's detail events do.
 struct Resumed {
@@ -55,8 +69,8 @@ inline Resumed PredictResuming(const MotionCase& c, const ContactPredictionOptio
   double t = c.t_begin;
   std::optional<FeaturePair> warm;
   for (int call = 0; call < 10000; ++call) {
-    r.last = PredictContact(*c.a->tracked, c.path_a, *c.b->tracked, c.path_b, t, c.t_end, warm,
-                            options);
+    r.last =
+        PredictContact(*c.a->tracked, c.path_a, *c.b->tracked, c.path_b, t, c.t_end, warm, options);
     r.iterations += r.last.iterations;
     r.advancement_steps += r.last.advancement_steps;
     if (r.last.kind != ContactPrediction::Kind::kCheckpoint) break;
@@ -77,8 +91,8 @@ inline double ColdDistance(const MotionCase& c, double t) {
 inline void CheckAgainstOracle(const MotionCase& c, ContactPrediction::Kind kind, double time,
                                double distance_at_time, int iterations, bool exact, double level,
                                const std::function<double(double)>& distance, ToiFigures& f) {
-  const SampledFirstTime oracle = FirstTimeBelow(distance, c.Lipschitz(), level, c.t_begin,
-                                                 c.t_end, kOracleMinStep * (c.t_end - c.t_begin));
+  const SampledFirstTime oracle = FirstTimeBelow(distance, c.Lipschitz(), level, c.t_begin, c.t_end,
+                                                 kOracleMinStep * (c.t_end - c.t_begin));
   ++f.cases;
   f.oracle_samples += oracle.samples;
   f.iterations += iterations;
@@ -120,7 +134,9 @@ inline void CheckAgainstOracle(const MotionCase& c, ContactPrediction::Kind kind
 }
 
 // `spin` = 0: translating pairs (exact); otherwise rotating pairs (never late).
-inline ToiFigures RunPairCheck(std::uint64_t seed, int count, double spin, bool accelerate) {
+// `aligned`: the degenerate AlignedPair cases (translating) instead of random ones.
+inline ToiFigures RunPairCheck(std::uint64_t seed, int count, double spin, bool accelerate,
+                               bool aligned = false) {
   MotionCaseGenerator generator(seed);
   ToiFigures f;
   ContactPredictionOptions options;
@@ -128,14 +144,18 @@ inline ToiFigures RunPairCheck(std::uint64_t seed, int count, double spin, bool 
   const bool exact = spin == 0.0;
   const double level = exact ? kToiTolerance : options.advancement_target * kToiTolerance;
   for (int trial = 0; trial < count; ++trial) {
-    const MotionCase c = generator.Pair(spin, accelerate);
+    const MotionCase c = aligned ? generator.AlignedPair() : generator.Pair(spin, accelerate);
     SCOPED_TRACE("seed " + std::to_string(seed) + " trial " + std::to_string(trial) + ": " +
                  c.Describe());
+    const auto start = std::chrono::steady_clock::now();
     const Resumed r = PredictResuming(c, options);
+    f.prediction_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     f.checkpoints += r.checkpoints;
     f.advancement_steps += r.advancement_steps;
-    CheckAgainstOracle(c, r.last.kind, r.last.time, ColdDistance(c, r.last.time), r.iterations,
-                       exact, level, [&](double t) { return ColdDistance(c, t); }, f);
+    CheckAgainstOracle(
+        c, r.last.kind, r.last.time, ColdDistance(c, r.last.time), r.iterations, exact, level,
+        [&](double t) { return ColdDistance(c, t); }, f);
   }
   return f;
 }
@@ -150,9 +170,8 @@ inline ToiFigures RunWallCheck(std::uint64_t seed, int count, double spin, bool 
     const Vec3 normal = generator.random().RandomUnit();
     const MotionCase c = generator.Wall(normal, spin, accelerate);
     SCOPED_TRACE("seed " + std::to_string(seed) + " trial " + std::to_string(trial) +
-                 ": wall normal (" + std::to_string(normal.x()) + " " +
-                 std::to_string(normal.y()) + " " + std::to_string(normal.z()) + "), " +
-                 c.Describe());
+                 ": wall normal (" + std::to_string(normal.x()) + " " + std::to_string(normal.y()) +
+                 " " + std::to_string(normal.z()) + "), " + c.Describe());
     auto distance = [&](double t) {
       const Pose X = c.path_a.PoseAt(t);
       double d = std::numeric_limits<double>::infinity();
@@ -163,12 +182,15 @@ inline ToiFigures RunWallCheck(std::uint64_t seed, int count, double spin, bool 
     WallContactPrediction p;
     int iterations = 0, calls = 0;
     double t = c.t_begin;
+    const auto start = std::chrono::steady_clock::now();
     do {
       p = PredictWallContact(poly, c.path_a, normal, 0.0, t, c.t_end, kToiTolerance);
       iterations += p.iterations;
       t = p.time;
       f.checkpoints += p.kind == ContactPrediction::Kind::kCheckpoint;
     } while (p.kind == ContactPrediction::Kind::kCheckpoint && ++calls < 10000);
+    f.prediction_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_NEAR(p.gap, distance(p.time), 1e-12) << "the reported gap is the nearest vertex's";
     CheckAgainstOracle(c, p.kind, p.time, distance(p.time), iterations, exact, level, distance, f);
   }
