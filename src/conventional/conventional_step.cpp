@@ -10,6 +10,7 @@
 
 #include "conventional/bisection.hpp"
 #include "conventional/conventional_impl.hpp"
+#include "conventional/overlap_certificate.hpp"
 
 namespace sparsedyn {
 namespace {
@@ -111,7 +112,14 @@ std::optional<ConventionalWorld::Impl::Candidate> ConventionalWorld::Impl::Locat
   // The interval where both paths hold: from the step start or a body's last collision.
   const double lo = std::max({t0, bodies_[a].path.t0(), bodies_[b].path.t0()});
   const double tolerance = PairTolerance(a, b);
-  auto touching = [&](double t) { return PairFeatures(a, b, t).distance <= tolerance; };
+  auto touching = [&](double t) {
+    // Overlapping midpoints are certified by GJK: a penetration depth would cost far more.
+    if (CertainlyOverlap(*ShapeOf(a).polyhedron, bodies_[a].path.PoseAt(t), *ShapeOf(b).polyhedron,
+                         bodies_[b].path.PoseAt(t))) {
+      return true;
+    }
+    return PairFeatures(a, b, t).distance <= tolerance;
+  };
   ++stats_.bisection_evaluations;
   // Touching already at the interval start (a resting or just-resolved contact): nothing to
   // bisect; the contact is looked at where it was found, the step end.
