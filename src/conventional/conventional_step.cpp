@@ -77,7 +77,11 @@ void ConventionalWorld::Impl::DetectAtStepEnd(double t0, double t1, std::vector<
   });
 
   // Walls, by each body's nearest vertex once its sphere reaches the wall.
+  const Container& box = settings_.container;
   for (std::uint32_t i = 0; i < bodies_.size() && Walled(); ++i) {
+    // Most bodies' boxes are clear of every wall: one test instead of six.
+    const Aabb& b = boxes[i];
+    if ((b.lo.array() > box.lo.array()).all() && (b.hi.array() < box.hi.array()).all()) continue;
     for (int w = 0; w < 6; ++w) {
       if (std::optional<Candidate> c = LocateWall(i, w, t0, t1)) found.push_back(*c);
     }

@@ -5,8 +5,8 @@
 
 namespace sparsedyn {
 
-std::uint64_t SweepAndPrune::Update(std::vector<Aabb> boxes) {
-  boxes_ = std::move(boxes);
+std::uint64_t SweepAndPrune::Update(const std::vector<Aabb>& boxes) {
+  boxes_ = boxes;  // into the capacity of the last step
   // Bodies added since the last update join at the end; the sort places them.
   while (order_.size() < boxes_.size()) order_.push_back(static_cast<std::uint32_t>(order_.size()));
   std::uint64_t swaps = 0;

@@ -22,7 +22,7 @@ struct Aabb {
 class SweepAndPrune {
  public:
   /// Takes this step's boxes (index = body) and re-sorts; returns the swaps made.
-  std::uint64_t Update(std::vector<Aabb> boxes);
+  std::uint64_t Update(const std::vector<Aabb>& boxes);
 
   /// Calls visit(a, b) with a < b for every pair of overlapping boxes, each pair once.
   template <typename Visit>
