@@ -19,12 +19,7 @@ namespace {
 // The scene to run: the file, or the preset's fully expanded scene.
 Result<SceneDescription> LoadScene(const RunOptions& options) {
   if (options.scene_file.empty()) {
-    scenes::PresetRequest request;
-    request.name = options.preset.value_or("default");
-    request.n = options.n;
-    request.density = options.density;
-    request.seed = options.seed;
-    Result<scenes::Preset> preset = scenes::MakePreset(request);
+    Result<scenes::Preset> preset = scenes::MakePreset(PresetRequestOf(options));
     if (!preset) return preset.error();
     return std::move(preset->scene);
   }

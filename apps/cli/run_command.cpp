@@ -46,11 +46,7 @@ Result<Setup> MakeSetup(const RunOptions& options) {
     broadphase = *options.broadphase == "allpairs" ? Broadphase::kAllPairs : Broadphase::kGrid;
   }
   if (options.scene_file.empty()) {
-    scenes::PresetRequest request;
-    request.name = options.preset.value_or("default");
-    request.n = options.n;
-    request.density = options.density;
-    request.seed = options.seed;
+    scenes::PresetRequest request = PresetRequestOf(options);
     request.broadphase = broadphase;
     Result<scenes::Preset> preset = scenes::MakePreset(request);
     if (!preset) return preset.error();

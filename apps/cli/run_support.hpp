@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/cli/run_options.hpp"
+#include "scenes/presets.hpp"
 #include "sparsedyn/io/scene_file.hpp"
 #include "sparsedyn/types.hpp"
 
@@ -21,6 +23,16 @@ inline double PackingOf(const SceneDescription& scene) {
   double volume = 0;
   for (const SceneBody& body : scene.bodies) volume += scene.shapes[body.shape].Volume();
   return volume / (box.hi - box.lo).prod();
+}
+
+/// The preset the options ask for (--preset, --n, --density, --seed; "default" when none).
+inline scenes::PresetRequest PresetRequestOf(const RunOptions& options) {
+  scenes::PresetRequest request;
+  request.name = options.preset.value_or("default");
+  request.n = options.n;
+  request.density = options.density;
+  request.seed = options.seed;
+  return request;
 }
 
 }  // namespace sparsedyn::cli
