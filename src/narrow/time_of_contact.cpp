@@ -86,6 +86,32 @@ ContactPrediction NoneForever(ContactPrediction out, double t_end) {
   return out;
 }
 
+// The time in (apart, within] at which a translating pair's distance crosses the tolerance
+// (distance > tol at `apart`, < tol at `within`; convex in between, so one crossing), by
+// bisection to adjacent doubles; `out` holds the walk at `within` and gets the answer.
+ContactPrediction BisectCrossing(const TrackedPolyhedron& a, const RigidPath& path_a,
+                                 const TrackedPolyhedron& b, const RigidPath& path_b, double apart,
+                                 double within, double tol, const ClosestFeaturesOptions& walk,
+                                 ContactPrediction out) {
+  ClosestFeatures at_within = out.features;
+  while (true) {
+    const double mid = apart + 0.5 * (within - apart);
+    if (mid <= apart || mid >= within) break;
+    const ClosestFeatures f =
+        FindClosestFeatures(a, path_a.PoseAt(mid), b, path_b.PoseAt(mid), at_within.features, walk);
+    if (f.distance <= tol) {
+      within = mid;
+      at_within = f;
+    } else {
+      apart = mid;
+    }
+  }
+  out.kind = ContactPrediction::Kind::kContact;
+  out.time = within;
+  out.features = at_within;
+  return out;
+}
+
 }  // namespace
 
 ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& path_a,
@@ -110,6 +136,7 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
   double t = t_begin;
   bool contact_predicted = false;
   double retried_at = -std::numeric_limits<double>::infinity();
+  double apart_at = t_begin;  // the last time the walk saw the pair beyond the tolerance
   std::optional<FeaturePair> start = warm;
   while (true) {
     out.time = t;
@@ -121,11 +148,18 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
           FindClosestFeatures(a, path_a.PoseAt(t), b, path_b.PoseAt(t), std::nullopt, options.walk);
     }
     start = out.features.features;
+    // A translating pair's distance is convex in time, so if a zone event jumped past the
+    // contact (a pair that was not quite closest, e.g. among parallel features), the first
+    // time within the tolerance is the one crossing between the last time seen apart and now.
+    if (translating && out.features.distance < tol - kContactRoundOff * scale && t > apart_at) {
+      return BisectCrossing(a, path_a, b, path_b, apart_at, t, tol, options.walk, out);
+    }
     const double accepted = contact_predicted ? tol + kContactRoundOff * scale : tol;
     if (out.features.distance <= accepted) {
       out.kind = ContactPrediction::Kind::kContact;
       return out;
     }
+    apart_at = t;
     if (t >= t_end) {
       out.kind = ContactPrediction::Kind::kNone;
       return out;

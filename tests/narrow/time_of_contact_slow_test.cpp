@@ -16,6 +16,20 @@ TEST(TimeOfContactSlow, TwentyThousandTranslatingPairsMatchTheOracleExactly) {
   testing::ExpectNoErrors(aligned, "slow aligned translating pairs", /*exact=*/true);
 }
 
+// The World's tolerance is 1e-9 x the radii: the same checks with a tolerance 1e4 times smaller.
+TEST(TimeOfContactSlow, TinyToleranceKeepsTheGuarantees) {
+  for (const bool aligned : {false, true}) {
+    const testing::ToiFigures f =
+        testing::RunPairCheck(/*seed=*/20261206, 3000, /*spin=*/0.0, /*accelerate=*/!aligned,
+                              aligned, /*tolerance=*/1e-8);
+    testing::ExpectNoErrors(f, aligned ? "tol 1e-8 aligned pairs" : "tol 1e-8 translating pairs",
+                            /*exact=*/true);
+  }
+  const testing::ToiFigures f = testing::RunPairCheck(/*seed=*/20261207, 2000, /*spin=*/10.0,
+                                                      /*accelerate=*/true, false, 1e-8);
+  testing::ExpectNoErrors(f, "tol 1e-8 rotating pairs", /*exact=*/false);
+}
+
 TEST(TimeOfContactSlow, TenThousandRotatingPairsAreNeverLate) {
   const testing::ToiFigures f =
       testing::RunPairCheck(/*seed=*/20261203, 10000, /*spin=*/10.0, /*accelerate=*/true);
