@@ -46,6 +46,7 @@ void ConventionalWorld::Impl::SetMotion(std::uint32_t i, double t, const Vec3& v
   path = path.RebasedAt(t);
   path.centre.v0 = v;
   path.omega = omega;
+  ++bodies_[i].version;
 }
 
 bool ConventionalWorld::Impl::ResolvePair(std::uint32_t a, std::uint32_t b, double t) {

@@ -52,6 +52,7 @@ class ConventionalWorld::Impl {
     double inv_mass = 0;
     double restitution = 1;
     double friction = 0;
+    std::uint32_t version = 0;  // path changes (collisions) so far
   };
   using Candidate = ConventionalCandidate;
 

@@ -197,6 +197,7 @@ BodyState ConventionalWorld::StateAt(BodyId id, double t) const {
   s.acceleration = b.path.centre.a;
   s.radius = b.radius;
   s.mass = 1.0 / b.inv_mass;
+  s.version = b.version;
   s.orientation = b.path.OrientationAt(t);
   s.angular_velocity = b.path.omega;
   return s;

@@ -149,6 +149,7 @@ TEST_P(HeadOnCubes, CollisionLocatedWithinTheBisectionResolutionAndVelocitiesSwa
   EXPECT_NEAR(world.StateAt(BodyId{0, 0}, 1.5).velocity.x(), -1.0, 1e-9);
   EXPECT_NEAR(world.StateAt(BodyId{1, 0}, 1.5).velocity.x(), 1.0, 1e-9);
   EXPECT_LT(world.StateAt(BodyId{0, 0}, 1.5).angular_velocity.norm(), 1e-9);
+  EXPECT_EQ(world.StateAt(BodyId{0, 0}, 1.5).version, 1u);
   EXPECT_EQ(world.Stats().steps, 50u);
   EXPECT_EQ(world.Stats().collisions, 1u);
   // Bisection of one step down to dt 10^-A2 takes about A2 lg 10 halvings.
