@@ -96,7 +96,7 @@ int RunConventional(const RunOptions& options) {
   }
   Result<SceneDescription> scene = LoadScene(options);
   if (!scene) return fail(scene.error().message, 2);
-  const ConventionalSettings conventional{.dt = *options.dt, .digits = options.digits};
+  const ConventionalSettings conventional{.dt = *options.dt, .digits = options.digits.value_or(4)};
   Result<ConventionalWorld> world = Build(*scene, conventional);
   if (!world) {
     const std::string where = options.scene_file.empty() ? "" : options.scene_file + ": ";

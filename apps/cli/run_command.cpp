@@ -1,10 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "apps/cli/run_command.hpp"
 
-#include "apps/cli/conventional_run.hpp"
-#include "apps/cli/run_options.hpp"
-#include "apps/cli/run_support.hpp"
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -19,6 +15,9 @@
 #include <optional>
 #include <string>
 
+#include "apps/cli/conventional_run.hpp"
+#include "apps/cli/run_options.hpp"
+#include "apps/cli/run_support.hpp"
 #include "scenes/presets.hpp"
 #include "sparsedyn/io/recording.hpp"
 #include "sparsedyn/io/scene_file.hpp"
@@ -150,8 +149,8 @@ void PrintSummary(const nlohmann::json& out) {
 
 int Run(const RunOptions& options) {
   if (options.method == "conventional") return RunConventional(options);
-  if (options.dt) {
-    std::cerr << "sparsedyn run: --dt applies to --method conventional\n";
+  if (options.dt || options.digits) {
+    std::cerr << "sparsedyn run: --dt and --digits apply to --method conventional\n";
     return 2;
   }
   Result<Setup> setup = MakeSetup(options);

@@ -23,7 +23,7 @@ struct RunOptions {
   std::string program;           // how to invoke this tool again, for the "view it with" hint
   std::string method = "event";  // event (the World) | conventional (docs/conventional.md)
   std::optional<double> dt;      // the conventional method's step, s
-  int digits = 4;                // the conventional method's bisection digits (A2)
+  std::optional<int> digits;     // the conventional method's bisection digits (A2; 4)
 };
 
 }  // namespace sparsedyn::cli

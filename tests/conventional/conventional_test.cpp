@@ -444,8 +444,9 @@ TEST(Cli, BadMethodOptionsAreClearErrors) {
       {"run " + kScene + " --method conventional --dt 0", "dt > 0"},
       {"run " + kScene + " --method conventional --dt -0.5", "dt > 0"},
       {"run " + kScene + " --method bogus --dt 0.1", "bogus"},
-      {"run " + kScene + " --dt 0.1", "--dt applies to --method conventional"},
+      {"run " + kScene + " --dt 0.1", "apply to --method conventional"},
       {"run " + kScene + " --method conventional --dt 0.1 --digits 20", "digits"},
+      {"run " + kScene + " --digits 3", "apply to --method conventional"},
       {"run --preset gas --n 10 --method conventional --dt 0.1", "periodic"},
   };
   for (const Case& c : cases) {
