@@ -194,6 +194,17 @@ TEST(Aliasing, SmallStepFindsTheHitAtItsExactTime) {
   EXPECT_LT(run.final_x, -0.15);  // bounced back
 }
 
+TEST(Aliasing, TheEventDrivenWorldSeesTheHitTheLargeStepMisses) {
+  World world;
+  ASSERT_TRUE(world.AddBody(Body(Box(0.05, 2, 2), Vec3(0, 0, 0), Vec3::Zero(), 1e6)).ok());
+  ASSERT_TRUE(world.AddBody(Body(Box(0.1, 0.1, 0.1), Vec3(-3, 0, 0), Vec3(50, 0, 0))).ok());
+  std::vector<CollisionEvent> events;
+  world.OnCollision([&](const CollisionEvent& e) { events.push_back(e); });
+  ASSERT_TRUE(world.AdvanceTo(0.2).ok());
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_NEAR(events[0].time, 2.85 / 50, 1e-9);
+}
+
 // --- conservation ---------------------------------------------------------------------------
 
 struct SceneOptions {
