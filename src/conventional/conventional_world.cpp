@@ -142,6 +142,8 @@ Result<BodyId> ConventionalWorld::Impl::AddBody(const BodyDef& def) {
 }
 
 Status ConventionalWorld::Impl::AdvanceTo(double t) {
+  // Checked again here: with asserts off a bad dt would never advance the clock.
+  if (Status ok = CheckSettings(settings_, conventional_); !ok) return ok;
   started_ = true;
   const double dt = conventional_.dt;
   while (now_ < t) {
