@@ -15,6 +15,9 @@
 #include <optional>
 #include <string>
 
+#include "apps/cli/conventional_run.hpp"
+#include "apps/cli/run_options.hpp"
+#include "apps/cli/run_support.hpp"
 #include "scenes/presets.hpp"
 #include "sparsedyn/io/recording.hpp"
 #include "sparsedyn/io/scene_file.hpp"
@@ -25,39 +28,12 @@ namespace {
 // Where `sparsedyn run` with the default scene writes its recording unless told otherwise.
 constexpr const char* kDefaultRecording = "sparsedyn-default.sdrec";
 
-struct RunOptions {
-  std::string scene_file;
-  std::optional<std::string> preset;
-  std::optional<std::uint32_t> n;
-  std::optional<double> density;
-  std::optional<std::uint64_t> seed;
-  std::optional<double> until;
-  std::optional<std::string> broadphase;
-  bool json = false;
-  std::string record_file;
-  bool no_record = false;
-  std::string write_scene;
-  std::string program;  // how to invoke this tool again, for the "view it with" hint
-};
-
 // What is about to run: the scene, its World and what the summary reports about it.
 struct Setup {
   SceneDescription scene;
   World world;
   double density = 0;  // packing fraction reported as "density"
 };
-
-nlohmann::json VectorJson(const Vec3& v) { return {v[0], v[1], v[2]}; }
-
-// The packing fraction of a scene that does not state one: body volumes over the box volume.
-double PackingOf(const SceneDescription& scene) {
-  if (scene.packing) return *scene.packing;
-  const Container& box = scene.settings.container;
-  if (box.kind == Container::Kind::kOpen) return 0.0;
-  double volume = 0;
-  for (const SceneBody& body : scene.bodies) volume += scene.shapes[body.shape].Volume();
-  return volume / (box.hi - box.lo).prod();
-}
 
 // The scene file or the preset, and its World; an Error names the bad option or file.
 Result<Setup> MakeSetup(const RunOptions& options) {
@@ -69,11 +45,7 @@ Result<Setup> MakeSetup(const RunOptions& options) {
     broadphase = *options.broadphase == "allpairs" ? Broadphase::kAllPairs : Broadphase::kGrid;
   }
   if (options.scene_file.empty()) {
-    scenes::PresetRequest request;
-    request.name = options.preset.value_or("default");
-    request.n = options.n;
-    request.density = options.density;
-    request.seed = options.seed;
+    scenes::PresetRequest request = PresetRequestOf(options);
     request.broadphase = broadphase;
     Result<scenes::Preset> preset = scenes::MakePreset(request);
     if (!preset) return preset.error();
@@ -129,6 +101,7 @@ nlohmann::json Summary(const Setup& setup, const std::string& broadphase, double
   }
   const double collisions = static_cast<double>(stats.collisions + stats.wall_collisions);
   return {
+      {"method", "event"},
       {"preset", setup.scene.name},
       {"bodies", world.BodyCount()},
       {"density", setup.density},
@@ -175,6 +148,11 @@ void PrintSummary(const nlohmann::json& out) {
 }
 
 int Run(const RunOptions& options) {
+  if (options.method == "conventional") return RunConventional(options);
+  if (options.dt || options.digits) {
+    std::cerr << "sparsedyn run: --dt and --digits apply to --method conventional\n";
+    return 2;
+  }
   Result<Setup> setup = MakeSetup(options);
   if (!setup) {
     std::cerr << "sparsedyn run: " << setup.error().message << "\n";
@@ -280,6 +258,15 @@ void AddRunCommand(CLI::App& app, const std::string& program) {
   run->add_option("--write-scene", options->write_scene,
                   "Write the scene with every body listed to this JSON file and exit "
                   "(`sparsedyn run FILE` then gives the same run)");
+  run->add_option("--method", options->method,
+                  "event (default: the event-driven World) | conventional (fixed steps of --dt, "
+                  "collisions located by bisection to --digits more digits; polyhedra only)")
+      ->check(CLI::IsMember({"event", "conventional"}));
+  run->add_option("--dt", options->dt, "Time step of --method conventional, s (> 0)");
+  run->add_option("--digits", options->digits,
+                  "Digits the conventional method locates a collision to below the step "
+                  "(default 4)")
+      ->check(CLI::Range(0, 15));
   run->callback([options] { throw CLI::RuntimeError(Run(*options)); });
 }
 

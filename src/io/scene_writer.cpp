@@ -81,23 +81,27 @@ Status WriteScene(const SceneDescription& scene, const std::filesystem::path& pa
   return Status::Ok();
 }
 
+BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index) {
+  const SceneBody& body = scene.bodies[index];
+  const SceneShape& shape = scene.shapes[body.shape];
+  BodyDef def;
+  def.radius = shape.radius;
+  def.shape = shape.polyhedron;  // null for a sphere; shared by the bodies of one shape
+  def.position = body.position;
+  def.orientation = body.orientation;
+  def.velocity = body.velocity;
+  def.angular_velocity = body.angular_velocity;
+  def.thrust = body.thrust;
+  def.mass = body.mass;
+  def.restitution = body.restitution;
+  def.friction = body.friction;
+  return def;
+}
+
 Result<World> BuildWorld(const SceneDescription& scene) {
   World world(scene.settings);
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-    const SceneBody& body = scene.bodies[i];
-    const SceneShape& shape = scene.shapes[body.shape];
-    BodyDef def;
-    def.radius = shape.radius;
-    def.shape = shape.polyhedron;  // null for a sphere; shared by the bodies of one shape
-    def.position = body.position;
-    def.orientation = body.orientation;
-    def.velocity = body.velocity;
-    def.angular_velocity = body.angular_velocity;
-    def.thrust = body.thrust;
-    def.mass = body.mass;
-    def.restitution = body.restitution;
-    def.friction = body.friction;
-    Result<BodyId> id = world.AddBody(def);
+    Result<BodyId> id = world.AddBody(SceneBodyDef(scene, i));
     if (!id) return Error{"bodies[" + std::to_string(i) + "]: " + id.error().message};
   }
   return world;

@@ -94,6 +94,10 @@ std::string FormatScene(const SceneDescription& scene);
 /// Writes FormatScene(scene) to `path`.
 Status WriteScene(const SceneDescription& scene, const std::filesystem::path& path);
 
+/// The BodyDef of body `index` of the scene (its shape's radius and polyhedron, shared between
+/// the bodies of one shape): what BuildWorld adds, and what other simulators of a scene take.
+BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index);
+
 /// A World holding the scene's bodies, added in order. Nothing is returned half-built: an Error
 /// names the body ("bodies[12]: ...") when the World refuses it (overlap, outside the
 /// container...). Polyhedral bodies are refused: the World simulates spheres only until
