@@ -383,7 +383,7 @@ TEST(SceneFile, TheDocumentedExampleParses) {
   EXPECT_EQ(scene->bodies.size(), 3u);
   Result<World> world = BuildWorld(*scene);
   ASSERT_FALSE(world.ok());
-  EXPECT_NE(world.error().message.find("issue #4"), std::string::npos);
+  EXPECT_NE(world.error().message.find("spheres or polyhedra, not both"), std::string::npos);
   // Without its polyhedron it runs.
   scene->bodies.pop_back();
   EXPECT_TRUE(BuildWorld(*scene).ok());
