@@ -7,11 +7,6 @@
 namespace sparsedyn::scenes {
 namespace {
 
-// The embedded default scene of `sparsedyn run`: a small periodic gas that runs in about a
-// second, until the polyhedra of issue #4 take its place.
-constexpr std::uint32_t kDefaultN = 2000;
-constexpr double kDefaultDensity = 0.10;
-constexpr double kDefaultDuration = 20.0;
 constexpr double kGasDuration = 10.0;
 
 Result<Preset> MakeGasPreset(const PresetRequest& request, std::uint32_t n, double density,
@@ -47,8 +42,8 @@ Result<Preset> MakeGasPreset(const PresetRequest& request, std::uint32_t n, doub
                 options.packing,   options.seed,     duration};
 }
 
-// The thesis scene (§7) is made without a World, then built: BuildWorld refuses polyhedra until
-// issue #4, and that Error is what the preset returns until then.
+// The thesis scene (§7), also the embedded default scene of `sparsedyn run` (1000 polyhedra,
+// 10 simulated seconds, a fraction of a second of work).
 Result<Preset> MakeThesisPreset(const PresetRequest& request) {
   ThesisOptions options;
   options.n = request.n.value_or(options.n);
@@ -57,6 +52,7 @@ Result<Preset> MakeThesisPreset(const PresetRequest& request) {
   options.broadphase = request.broadphase.value_or(options.broadphase);
   Result<SceneDescription> scene = MakeThesisScene(options);
   if (!scene) return scene.error();
+  scene->name = request.name;
   Result<World> world = BuildWorld(*scene);
   if (!world) return Error{"thesis: " + world.error().message};
   return Preset{std::move(*world), std::move(*scene), request.name,    options.n,
@@ -69,11 +65,8 @@ std::vector<std::string> PresetNames() { return {"default", "gas", "thesis"}; }
 
 Result<Preset> MakePreset(const PresetRequest& request) {
   if (request.n && *request.n == 0) return Error{"--n must be >= 1"};
-  if (request.name == "default") {
-    return MakeGasPreset(request, kDefaultN, kDefaultDensity, kDefaultDuration);
-  }
   if (request.name == "gas") return MakeGasPreset(request, 1000, 0.05, kGasDuration);
-  if (request.name == "thesis") return MakeThesisPreset(request);
+  if (request.name == "thesis" || request.name == "default") return MakeThesisPreset(request);
   std::string names;
   for (const std::string& name : PresetNames()) names += (names.empty() ? "" : ", ") + name;
   return Error{"unknown preset '" + request.name + "' (known: " + names + ")"};
