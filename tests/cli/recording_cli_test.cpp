@@ -63,6 +63,28 @@ TEST(CliRecord, RecordThenExportGivesOneJsonObjectPerRecord) {
   std::filesystem::remove(lines);
 }
 
+// FNV-1a of a file's bytes.
+std::uint64_t FileHash(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::uint64_t hash = 1469598103934665603ull;
+  for (char c; in.get(c);) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+  return hash;
+}
+
+TEST(CliRecord, ThePolyhedraOfTheThesisPresetRecordTheSameBytesForTheSameSeed) {
+  std::uint64_t hashes[2] = {};
+  for (int k = 0; k < 2; ++k) {
+    const std::filesystem::path recording = TempPath("thesis" + std::to_string(k) + ".sdrec");
+    const Output run = RunCli("run --preset thesis --n 300 --seed 7 --until 3 --json --record " +
+                              recording.string());
+    ASSERT_EQ(run.status, 0) << run.out;
+    EXPECT_GT(nlohmann::json::parse(run.out)["body_collisions"].get<int>(), 10);
+    hashes[k] = FileHash(recording);
+    std::filesystem::remove(recording);
+  }
+  EXPECT_EQ(hashes[0], hashes[1]);
+}
+
 TEST(CliRecord, BadFilesAreClearErrors) {
   const std::filesystem::path bogus = TempPath("bogus.sdrec");
   std::ofstream(bogus) << "hello, not a recording";
