@@ -4,7 +4,7 @@
 //     node tests/viewer/screenshot.js RUN.sdrec OUT.png [TIME] [BODY]
 // It opens the recording in headless Chromium, pauses at TIME, selects the visible body nearest
 // to BODY's index (or none) and saves a 1280x800 screenshot. The figure in the README:
-//   sparsedyn run --record run.sdrec   (the default scene: a 2000-sphere gas)
+//   sparsedyn run --record run.sdrec   (the default scene: 1000 polyhedra of the thesis)
 //   node tests/viewer/screenshot.js run.sdrec docs/figures/viewer.png 6.2 0
 import {spawnSync} from 'node:child_process';
 import {mkdtempSync} from 'node:fs';
