@@ -297,6 +297,25 @@ int ConvexPolyhedron::SupportVertex(const Eigen::Vector3d& direction) const {
   return best;
 }
 
+int ConvexPolyhedron::SupportVertexFrom(const Eigen::Vector3d& direction, int start) const {
+  int best = start;
+  double best_value = direction.dot(vertex(start));
+  for (bool climbed = true; climbed;) {
+    climbed = false;
+    for (const std::int32_t h : VertexHalfEdges(best)) {
+      const int next = half_edge(h ^ 1).origin;
+      const double value = direction.dot(vertex(next));
+      if (value > best_value) {
+        best_value = value;
+        best = next;
+        climbed = true;
+        break;  // strictly higher each time: the climb cannot cycle
+      }
+    }
+  }
+  return best;
+}
+
 ConvexPolyhedron ConvexPolyhedron::Recentered() const {
   ConvexPolyhedron copy = *this;
   const Eigen::Vector3d shift = centroid_;

@@ -49,4 +49,8 @@ FeatureId TrackedPolyhedron::StartingFeature(const Eigen::Vector3d& direction_B)
   return FeatureId::Vertex(tables_->directions().VertexFor(direction_B));
 }
 
+int TrackedPolyhedron::SupportVertex(const Eigen::Vector3d& direction_B) const {
+  return polyhedron_->SupportVertexFrom(direction_B, tables_->directions().VertexFor(direction_B));
+}
+
 }  // namespace sparsedyn

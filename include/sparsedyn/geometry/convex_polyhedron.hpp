@@ -214,6 +214,11 @@ class ConvexPolyhedron {
   Eigen::Vector3d ClosestPointOnFeature(FeatureId feature, const Eigen::Vector3d& p) const;
   /// The vertex that maximises direction.dot(vertex) (lowest index on ties). O(V).
   int SupportVertex(const Eigen::Vector3d& direction) const;
+  /// The same maximum, found by climbing from vertex `start` to a strictly higher neighbour
+  /// until none is higher: on a convex polyhedron a vertex that no neighbour exceeds is a
+  /// maximum, so this is exact up to round-off in near-ties (where the value found is below
+  /// the maximum by at most a few ulps x scale() per vertex of the tie). O(path x degree).
+  int SupportVertexFrom(const Eigen::Vector3d& direction, int start) const;
   /// @}
 
   /// @name Copies and export

@@ -57,6 +57,10 @@ class TrackedPolyhedron {
   const ConvexPolyhedron& polyhedron() const { return *polyhedron_; }
   /// The feature the J.1.2 table proposes as closest to a far point in body-frame direction d.
   FeatureId StartingFeature(const Eigen::Vector3d& direction_B) const;
+  /// The support vertex in body-frame direction d (as ConvexPolyhedron::SupportVertex, up to
+  /// ties): the J.1.2 table's vertex for d, climbed to the maximum; a few dot products
+  /// instead of one per vertex.
+  int SupportVertex(const Eigen::Vector3d& direction_B) const;
 
   class Tables;  // defined in src/narrow/
   const Tables& tables() const { return *tables_; }
