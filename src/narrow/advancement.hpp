@@ -5,10 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
-#include "math/polynomial.hpp"
-#include "math/roots.hpp"
 #include "motion/rigid_path.hpp"
 #include "sparsedyn/geometry/convex_polyhedron.hpp"
 
@@ -21,11 +20,35 @@ inline constexpr double kMaxHorizon = 1e30;
 /// The first dt in [0, horizon] at which a gap closing at most at speed + accel * dt (so by at
 /// most speed dt + accel dt^2 / 2 in total) may have closed by `closable` (> 0). Before that
 /// time the gap certainly has not. std::nullopt when it cannot close within the horizon (e.g.
-/// speed <= 0 and accel <= 0). Conservative: EarliestRoot is never later than the true root.
+/// speed <= 0 and accel <= 0). Closed form (the stable root of the quadratic), then lowered by
+/// kStepRoundingSlack: the rounding of a few operations is far below it, so the step is never
+/// later than the exact root; a near-touch within the discriminant's rounding counts as a root.
+inline constexpr double kStepRoundingSlack = 1e-13;
 inline std::optional<double> AdvancementStep(double closable, double speed, double accel,
                                              double horizon) {
   if (speed <= 0.0 && accel <= 0.0) return std::nullopt;
-  return EarliestRoot(Polynomial{-closable, speed, 0.5 * accel}, 0.0, horizon);
+  if (!(closable > 0.0)) return 0.0;
+  double dt;
+  if (accel == 0.0) {
+    dt = closable / speed;
+  } else {
+    // speed dt + accel dt^2 / 2 = closable; disc = speed^2 + 2 accel closable. With accel < 0
+    // the two terms cancel: disc is raised by its rounding bound, which moves the smaller root
+    // earlier (the safe side) and keeps a touch within round-off a root.
+    const double product = 2.0 * accel * closable;
+    double disc = std::fma(speed, speed, product);
+    if (accel < 0.0) {
+      disc += 4.0 * std::numeric_limits<double>::epsilon() * (speed * speed - product);
+      if (disc < 0.0) return std::nullopt;  // the closing stops short of `closable`
+    }
+    const double root = std::sqrt(disc);
+    // speed > 0: 2 closable / (speed + root) has no cancellation; speed <= 0 (so accel > 0):
+    // (root - speed) / accel has none either.
+    dt = speed > 0.0 ? 2.0 * closable / (speed + root) : (root - speed) / accel;
+  }
+  dt *= 1.0 - kStepRoundingSlack;
+  if (!(dt <= horizon)) return std::nullopt;
+  return dt;
 }
 
 /// The largest speed at which a point of the body on `path` moves along any unit direction n
@@ -52,13 +75,20 @@ struct SpinRate {
   double now = 0.0;
   double growth = 0.0;
 };
-inline SpinRate SpinRateAlong(const ConvexPolyhedron& poly, const Pose& X, const Vec3& omega,
-                              const Vec3& d, double spin_radius) {
+/// `support(u_B)` returns the support vertex index of `poly` in body-frame direction u_B.
+template <typename Support>
+SpinRate SpinRateAlong(const ConvexPolyhedron& poly, const Pose& X, const Vec3& omega,
+                       const Vec3& d, double spin_radius, const Support& support) {
   const Vec3 u = d.cross(omega);
   if (u.squaredNorm() == 0.0) return {};
   const Vec3 u_B = X.rotation.normalized().conjugate() * u;
-  const double h = u_B.dot(poly.vertex(poly.SupportVertex(u_B)));
+  const double h = u_B.dot(poly.vertex(support(u_B)));
   return {std::max(h, 0.0), omega.norm() * u.norm() * spin_radius};
+}
+inline SpinRate SpinRateAlong(const ConvexPolyhedron& poly, const Pose& X, const Vec3& omega,
+                              const Vec3& d, double spin_radius) {
+  return SpinRateAlong(poly, X, omega, d, spin_radius,
+                       [&poly](const Vec3& u_B) { return poly.SupportVertex(u_B); });
 }
 
 }  // namespace sparsedyn::narrow

@@ -38,7 +38,7 @@ struct ContactPredictionOptions {
   // Rotating pairs: each advancement step stops where the gap may first have closed to
   // advancement_target * tolerance (in (0, 1)), so the prediction reaches a gap <= tolerance
   // in finitely many steps and is never later than the first time the gap is that small.
-  double advancement_target = 0.5;
+  double advancement_target = 0.9;
   ClosestFeaturesOptions walk;
 };
 
