@@ -150,10 +150,16 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
 
   // Inside the container.
   const Container& box = settings_.container;
-  if (polyhedron && box.kind == Container::Kind::kWalledBox) {
+  const auto sphere_inside = [&] {
+    return ((def.position.array() - radius) >= box.lo.array()).all() &&
+           ((def.position.array() + radius) <= box.hi.array()).all();
+  };
+  if (polyhedron && box.kind == Container::Kind::kWalledBox && !sphere_inside()) {
+    // Only a body whose bounding sphere crosses a wall can have a vertex outside.
     const ConvexPolyhedron& poly = *shapes_[shape].polyhedron;
+    const Eigen::Matrix3d rotation = def.orientation.normalized().toRotationMatrix();
     for (int v = 0; v < poly.vertex_count(); ++v) {
-      const Vec3 x = def.orientation * poly.vertex(v) + def.position;
+      const Vec3 x = rotation * poly.vertex(v) + def.position;
       for (int k = 0; k < 3; ++k) {
         if (x[k] < box.lo[k] || x[k] > box.hi[k]) {
           return Error{body + "vertex " + std::to_string(v) + " lies outside the walled box " +
@@ -162,7 +168,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
         }
       }
     }
-  } else if (box.kind == Container::Kind::kWalledBox) {
+  } else if (!polyhedron && box.kind == Container::Kind::kWalledBox) {
     for (int k = 0; k < 3; ++k) {
       if (def.position[k] - radius < box.lo[k] || def.position[k] + radius > box.hi[k]) {
         return Error{body + "position[" + std::to_string(k) + "] = " + Format(def.position[k]) +
@@ -288,7 +294,7 @@ void World::Impl::Start() {
     if (grid_) grid_->Insert(i, starts_[i].p0);
     if (all_pairs_) all_pairs_->Insert(i, starts_[i].p0);
   }
-  if (grid_ && !EngagesOnMeet()) Reorder();  // start in spatial order
+  if (grid_) Reorder();  // start in spatial order
   events_since_reorder_ = 0;
   if (polyhedra_) EngageOverlappingAtStart();
   for (std::uint32_t i = 0; i < n; ++i) PredictFull(i);

@@ -159,7 +159,9 @@ class World::Impl {
   double PredictWall(const Mover& mi, std::uint8_t& wall) const;
   void Schedule(std::uint32_t i, const Event& event);
   void PredictEngagement(std::uint32_t k);
-  void PredictEngagementsOf(std::uint32_t i);
+  /// Predicts all of i's engagements again, except the one with `done_partner` (a pair that
+  /// collided has its engagement predicted once, from its first body).
+  void PredictEngagementsOf(std::uint32_t i, std::uint32_t done_partner = kNoIndex);
 
   // --- the detailed phase for polyhedra (world_polyhedra.cpp) ---
   Result<std::uint32_t> AddShape(const std::shared_ptr<const ConvexPolyhedron>& shape);

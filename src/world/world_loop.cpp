@@ -170,7 +170,7 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
   PredictFull(i);
   PredictFull(j);
   PredictEngagementsOf(i);
-  PredictEngagementsOf(j);
+  PredictEngagementsOf(j, /*done_partner=*/i);
 }
 
 void World::Impl::HandleWallMeet(std::uint32_t i) {

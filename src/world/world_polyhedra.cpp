@@ -264,7 +264,7 @@ bool World::Impl::CollidePolyhedra(std::uint32_t a, std::uint32_t b,
   PredictFull(a);
   PredictFull(b);
   PredictEngagementsOf(a);
-  PredictEngagementsOf(b);
+  PredictEngagementsOf(b, /*done_partner=*/a);
   return true;
 }
 

@@ -198,9 +198,12 @@ void World::Impl::PredictEngagement(std::uint32_t k) {
   }
 }
 
-void World::Impl::PredictEngagementsOf(std::uint32_t i) {
+void World::Impl::PredictEngagementsOf(std::uint32_t i, std::uint32_t done_partner) {
   if (!EngagesOnMeet() || !engagements_.HasAny(i)) return;
-  for (const std::uint32_t k : engagements_.Of(i)) PredictEngagement(k);
+  for (const std::uint32_t k : engagements_.Of(i)) {
+    const Engagements::Engagement& e = engagements_[k];
+    if (e.a != done_partner && e.b != done_partner) PredictEngagement(k);
+  }
 }
 
 }  // namespace sparsedyn

@@ -25,16 +25,14 @@ void PermuteVector(std::vector<T>& values, const std::vector<std::uint32_t>& old
 }  // namespace
 
 void World::Impl::MaybeReorder() {
-  // AllPairs visits every element anyway; engagements hold element indices.
-  if (!grid_ || EngagesOnMeet()) return;
+  if (!grid_) return;  // AllPairs visits every element anyway
   if (++events_since_reorder_ < kEventsPerElementBetweenReorders * starts_.size()) return;
   events_since_reorder_ = 0;
   Reorder();
 }
 
 void World::Impl::Reorder() {
-  SPARSEDYN_ASSERT(grid_ && !has_envelopes_ && engagements_.Active() == 0,
-                   "Reorder: only worlds on the grid, without engagements, are renumbered");
+  SPARSEDYN_ASSERT(grid_.has_value(), "Reorder: only worlds on the grid are renumbered");
   const auto n = static_cast<std::uint32_t>(starts_.size());
   std::vector<std::uint64_t> key(n);
   for (std::uint32_t i = 0; i < n; ++i) key[i] = grid_->MortonKey(grid_->CellOf(i));
@@ -53,6 +51,12 @@ void World::Impl::Reorder() {
   PermuteVector(starts_, old_of_new);
   if (own_accelerations_) PermuteVector(acceleration_, old_of_new);
   PermuteVector(material_, old_of_new);
+  if (!envelope_.empty()) PermuteVector(envelope_, old_of_new);
+  if (polyhedra_) {
+    PermuteVector(shape_, old_of_new);
+    PermuteVector(q0_, old_of_new);
+    PermuteVector(omega_, old_of_new);
+  }
   PermuteVector(version_, old_of_new);
   PermuteVector(event_, old_of_new);
   PermuteVector(candidate_, old_of_new);
@@ -63,6 +67,7 @@ void World::Impl::Reorder() {
     if (candidate_[e].target != kNoIndex) candidate_[e].target = new_of_old[candidate_[e].target];
   }
   grid_->Permute(old_of_new);
+  engagements_.Renumber(new_of_old);
   // The queue is keyed by element: refill it (its tie-break by slot now follows the new order,
   // which is itself a deterministic function of the run).
   queue_.Clear();
