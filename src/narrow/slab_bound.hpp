@@ -23,10 +23,18 @@ namespace sparsedyn::narrow {
 /// separation at t, less kSupportSlack x scale for the round-off of the supports.
 class SlabBound {
  public:
+  /// `near` (optional) names features of A and B near the slab's faces (e.g. the closest
+  /// features that gave n): their vertices start the support climbs.
   SlabBound(const TrackedPolyhedron& a, const RigidPath& path_a, double spin_radius_a,
             const TrackedPolyhedron& b, const RigidPath& path_b, double spin_radius_b,
-            const Vec3& n, double t);
+            const Vec3& n, double t, std::optional<FeaturePair> near = std::nullopt);
+  /// B against the static plane {x : n . x = offset} (n towards B's allowed side): the plane
+  /// takes A's place, so Bound is a lower bound on B's gap to the plane.
+  static SlabBound Wall(const TrackedPolyhedron& b, const RigidPath& path_b, double spin_radius_b,
+                        const Vec3& n, double offset, double t);
 
+  /// Bound(0): the slab's separation at t (less the round-off slack).
+  double Separation() const { return at_zero_; }
   /// Bound(dt), for dt >= 0. Concave in dt.
   double operator()(double dt);
 
@@ -41,7 +49,11 @@ class SlabBound {
   double Support(const TrackedPolyhedron& body, const Eigen::Quaterniond& rotation,
                  const Vec3& direction_W, int& vertex) const;
 
-  const TrackedPolyhedron& a_;
+  SlabBound(const TrackedPolyhedron& b, const RigidPath& path_b, const Vec3& n, double t);
+  void Finish(double spin_radius_b, const RigidPath& path_b, double closing_accel,
+              double curvature_a);
+
+  const TrackedPolyhedron* a_ = nullptr;  // nullptr: a wall
   const TrackedPolyhedron& b_;
   Eigen::Quaterniond rotation_a_, rotation_b_;  // body to world at t
   Vec3 n_, u_a_, u_b_;
@@ -49,7 +61,9 @@ class SlabBound {
   double closing_ = 0.0;     // n . (v_B - v_A)
   double curvature_ = 0.0;   // spin terms plus a closing acceleration, per s^2 (>= 0)
   double slack_ = 0.0;
+  double at_zero_ = 0.0;
   int top_a_ = -1, bottom_b_ = -1;  // support vertices at the last evaluation
+  int top_a_0_ = -1, bottom_b_0_ = -1;  // ... and at dt = 0
 };
 
 }  // namespace sparsedyn::narrow

@@ -6,7 +6,6 @@
 #include <limits>
 
 #include "narrow/advancement.hpp"
-#include "narrow/pair_frame.hpp"
 #include "narrow/slab_bound.hpp"
 #include "narrow/tolerance_crossing.hpp"
 #include "narrow/zone_events.hpp"
@@ -34,32 +33,13 @@ narrow::RelativeTranslation RelativeMotion(const RigidPath& path_a, const RigidP
   return m;
 }
 
-// How far A (at X_WA) and B (at X_WB) are apart along the unit world direction n, from their
-// support vertices (in A's frame, for precision). The walk's normal may be off the true one by
-// a little when its pair is one of several almost equally close ones; this separation is valid
-// for any n, so the advancement below never depends on that normal being exact. The supports
-// are climbed from the direction tables (exact but for near-ties, whose round-off
-// kSupportSlack x scale covers).
-constexpr double kSupportSlack = 1e-12;
-double SeparationAlong(const TrackedPolyhedron& a, const Pose& X_WA, const TrackedPolyhedron& b,
-                       const Pose& X_WB, const Vec3& n) {
-  const ConvexPolyhedron& pa = a.polyhedron();
-  const ConvexPolyhedron& pb = b.polyhedron();
-  const narrow::PairFrame frame(X_WA, X_WB);
-  const Vec3 n_A = X_WA.rotation.normalized().conjugate() * n;
-  const Vec3 n_B = frame.R_AB.transpose() * n_A;
-  const double top_a = n_A.dot(pa.vertex(a.SupportVertex(n_A)));
-  return n_A.dot(frame.ToA(pb.vertex(b.SupportVertex(-n_B)))) - top_a -
-         kSupportSlack * std::max(pa.scale(), pb.scale());
-}
-
 // One conservative-advancement step; every bound below is valid, so the longest step is too.
-// (1) The separating slab along the walk's normal n (A to B): A's points move towards +n at
-// most at v_A . n + |n x w_A| r_A (r_A its SpinRadius), B's towards -n likewise, and the
-// accelerations add (a_A - a_B) . n per second. (2) The same with the spin part bounded by
-// SpinRateAlong (support extent now, growing with the turn). (3) The distance itself changes at
-// most at |v_B - v_A| + |w_A| r_A + |w_B| r_B, plus |a_B - a_A| per second. (4) The slab
-// along n bounded to second order (SlabBound), which near contact goes nearly all the way.
+// (1) The distance changes at most at |v_B - v_A| + |w_A| r_A + |w_B| r_B, plus |a_B - a_A| per
+// second. (2) The separating slab along the walk's normal n (A to B), measured on the support
+// vertices so that it is valid even if the walk's normal is off by round-off: A's points move
+// towards +n at most at v_A . n + |n x w_A| r_A (r_A its SpinRadius), B's towards -n likewise,
+// and the accelerations add (a_A - a_B) . n per second. (3) The same slab bounded to second
+// order (SlabBound), which near contact goes nearly all the way.
 std::optional<double> PairAdvancement(const TrackedPolyhedron& a, const RigidPath& path_a,
                                       double r_a, const TrackedPolyhedron& b,
                                       const RigidPath& path_b, double r_b,
@@ -71,25 +51,14 @@ std::optional<double> PairAdvancement(const TrackedPolyhedron& a, const RigidPat
   const std::optional<double> lipschitz = narrow::AdvancementStep(
       cf.distance - target, dv.norm() + path_a.omega.norm() * r_a + path_b.omega.norm() * r_b,
       da.norm(), horizon);
-  const Pose X_WA = path_a.PoseAt(t), X_WB = path_b.PoseAt(t);
-  const double slab = SeparationAlong(a, X_WA, b, X_WB, n) - target;
+  narrow::SlabBound bound(a, path_a, r_a, b, path_b, r_b, n, t, cf.features);
+  const double slab = bound.Separation() - target;
   if (!lipschitz || slab <= 0.0) return lipschitz;
   const std::optional<double> plain = narrow::AdvancementStep(
       slab, dv.dot(n) + n.cross(path_a.omega).norm() * r_a + n.cross(path_b.omega).norm() * r_b,
       da.dot(n), horizon);
   if (!plain) return std::nullopt;
-  const narrow::SpinRate spin_a =
-      narrow::SpinRateAlong(a.polyhedron(), X_WA, path_a.omega, n, r_a,
-                            [&a](const Vec3& u_B) { return a.SupportVertex(u_B); });
-  const narrow::SpinRate spin_b =
-      narrow::SpinRateAlong(b.polyhedron(), X_WB, path_b.omega, -n, r_b,
-                            [&b](const Vec3& u_B) { return b.SupportVertex(u_B); });
-  const std::optional<double> turning =
-      narrow::AdvancementStep(slab, dv.dot(n) + spin_a.now + spin_b.now,
-                              da.dot(n) + spin_a.growth + spin_b.growth, horizon);
-  if (!turning) return std::nullopt;
-  const double first_order = std::max({*plain, *turning, *lipschitz});
-  narrow::SlabBound bound(a, path_a, r_a, b, path_b, r_b, n, t);
+  const double first_order = std::max(*plain, *lipschitz);
   const std::optional<double> second_order = bound.Step(target, horizon, first_order);
   return second_order ? std::max(first_order, *second_order) : first_order;
 }

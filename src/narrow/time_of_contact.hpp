@@ -69,10 +69,10 @@ struct WallContactPrediction {
 /// The first time in [t_begin, t_end] at which the polyhedron on `path` comes within `tolerance`
 /// of the plane {x : normal.x = offset}. Exact for a non-rotating body (a root of the nearest
 /// vertex's polynomial), conservative advancement for a rotating one (never later than the
-/// first time the gap is tolerance / 2, with gap <= tolerance at the returned time). The
+/// first time the gap is 0.9 tolerance, with gap <= tolerance at the returned time). The
 /// polyhedron's frame origin is the point `path` moves; t_end may be infinity (as for
 /// PredictContact; kNone then reports the last gap evaluated).
-WallContactPrediction PredictWallContact(const ConvexPolyhedron& polyhedron, const RigidPath& path,
+WallContactPrediction PredictWallContact(const TrackedPolyhedron& body, const RigidPath& path,
                                          const Vec3& normal, double offset, double t_begin,
                                          double t_end, double tolerance, int max_iterations = 64);
 

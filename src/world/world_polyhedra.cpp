@@ -289,7 +289,7 @@ Event World::Impl::PredictPolyhedronWalls(std::uint32_t i, Event event) {
       // Touching the wall now: a contact if some vertex in the band approaches, else (it has
       // just bounced) the wall waits until the band could have been closed.
       const Vec3 n_B = pose.rotation.conjugate() * plane.normal;
-      const int nearest = polyhedron.SupportVertex(-n_B);
+      const int nearest = ShapeOf(i).tracked->SupportVertex(-n_B);
       const double gap = plane.normal.dot(pose.ToWorld(polyhedron.vertex(nearest))) - plane.offset;
       if (gap <= tolerance) {
         bool approaching = false;
@@ -311,7 +311,7 @@ Event World::Impl::PredictPolyhedronWalls(std::uint32_t i, Event event) {
     }
     ++stats_.detail_predictions;
     const WallContactPrediction p =
-        PredictWallContact(polyhedron, path, plane.normal, plane.offset, begin, event.time,
+        PredictWallContact(*ShapeOf(i).tracked, path, plane.normal, plane.offset, begin, event.time,
                            tolerance, kIterationsPerPrediction);
     stats_.detail_iterations += static_cast<std::uint64_t>(p.iterations);
     if (p.kind != ContactPrediction::Kind::kNone && p.time < event.time) {

@@ -156,7 +156,7 @@ TEST(TimeOfContact, AnOpenEndedIntervalFindsContactOrReportsNoneAtInfinity) {
       }
       // The wall x = -1, allowed side x >= -1: approached when speed < 0.
       const WallContactPrediction w =
-          PredictWallContact(*s.cube.polyhedron, b, Vec3::UnitX(), -1.0, 0.0, inf, kToiTolerance);
+          PredictWallContact(*s.cube.tracked, b, Vec3::UnitX(), -1.0, 0.0, inf, kToiTolerance);
       EXPECT_EQ(w.kind, speed < 0 ? Kind::kContact : Kind::kNone);
       EXPECT_EQ(w.time == inf, speed > 0);
     }
