@@ -100,7 +100,10 @@ ContactPrediction PredictContact(const TrackedPolyhedron& a, const RigidPath& pa
   const bool translating = !path_a.Rotates() && !path_b.Rotates();
   // Rotating pairs step towards a gap below the tolerance so that they reach it in few steps.
   const double target = translating ? tol : options.advancement_target * tol;
-  const double r_a = narrow::SpinRadius(pa, path_a), r_b = narrow::SpinRadius(pb, path_b);
+  const double r_a = options.spin_radius_a >= 0.0 ? options.spin_radius_a
+                                                 : narrow::SpinRadius(pa, path_a);
+  const double r_b = options.spin_radius_b >= 0.0 ? options.spin_radius_b
+                                                 : narrow::SpinRadius(pb, path_b);
 
   ContactPrediction out;
   double t = t_begin;

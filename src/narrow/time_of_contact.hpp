@@ -39,6 +39,10 @@ struct ContactPredictionOptions {
   // advancement_target * tolerance (in (0, 1)), so the prediction reaches a gap <= tolerance
   // in finitely many steps and is never later than the first time the gap is that small.
   double advancement_target = 0.9;
+  // narrow::SpinRadius of each path when the caller keeps it (it is O(vertices) and constant
+  // along a path); < 0: computed here.
+  double spin_radius_a = -1.0;
+  double spin_radius_b = -1.0;
   ClosestFeaturesOptions walk;
 };
 
@@ -71,9 +75,11 @@ struct WallContactPrediction {
 /// vertex's polynomial), conservative advancement for a rotating one (never later than the
 /// first time the gap is 0.9 tolerance, with gap <= tolerance at the returned time). The
 /// polyhedron's frame origin is the point `path` moves; t_end may be infinity (as for
-/// PredictContact; kNone then reports the last gap evaluated).
+/// PredictContact; kNone then reports the last gap evaluated). `spin_radius`: the path's
+/// narrow::SpinRadius if the caller keeps it (< 0: computed here).
 WallContactPrediction PredictWallContact(const TrackedPolyhedron& body, const RigidPath& path,
                                          const Vec3& normal, double offset, double t_begin,
-                                         double t_end, double tolerance, int max_iterations = 64);
+                                         double t_end, double tolerance, int max_iterations = 64,
+                                         double spin_radius = -1.0);
 
 }  // namespace sparsedyn

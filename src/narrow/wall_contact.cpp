@@ -42,7 +42,8 @@ WallContactPrediction Finish(ContactPrediction::Kind kind, double t, Nearest nea
 
 WallContactPrediction PredictWallContact(const TrackedPolyhedron& body, const RigidPath& path,
                                          const Vec3& normal, double offset, double t_begin,
-                                         double t_end, double tolerance, int max_iterations) {
+                                         double t_end, double tolerance, int max_iterations,
+                                         double spin_radius_given) {
   SPARSEDYN_ASSERT(std::isfinite(t_begin) && t_begin <= t_end,
                    "PredictWallContact needs t_begin finite and <= t_end");
   SPARSEDYN_ASSERT(tolerance > 0.0, "PredictWallContact needs a tolerance > 0");
@@ -79,7 +80,8 @@ WallContactPrediction PredictWallContact(const TrackedPolyhedron& body, const Ri
   // -(v . n) + |n x w| r, with r the SpinRadius (distance from the spin axis); the second-order
   // bound of the gap (SlabBound with the plane in A's place) usually goes much further. Both
   // are valid, so the longer step is taken.
-  const double spin_radius = narrow::SpinRadius(polyhedron, path);
+  const double spin_radius =
+      spin_radius_given >= 0.0 ? spin_radius_given : narrow::SpinRadius(polyhedron, path);
   const double spin = normal.cross(path.omega).norm() * spin_radius;
   double t = t_begin;
   for (int iteration = 0;; ++iteration) {

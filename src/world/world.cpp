@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "narrow/advancement.hpp"
 #include "world/world_impl.hpp"
 
 #include "world/overlap_index.hpp"
@@ -220,6 +221,8 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
     shape_.push_back(shape);
     q0_.push_back(def.orientation.normalized());
     omega_.push_back(def.angular_velocity);
+    spin_radius_.push_back(narrow::SpinRadius(
+        *shapes_[shape].polyhedron, RigidPath{Path{}, q0_.back(), def.angular_velocity}));
   }
   if (!def.envelope.IsZero() && !has_envelopes_) {
     has_envelopes_ = true;
@@ -402,7 +405,8 @@ std::size_t World::Impl::MemoryBytes() const {
                       event_.capacity() * sizeof(PendingEvent) + candidate_.capacity() * sizeof(Candidate) +
                       queue_.MemoryBytes() + engagement_queue_.MemoryBytes();
   bytes += shape_.capacity() * sizeof(std::uint32_t) +
-           q0_.capacity() * sizeof(Eigen::Quaterniond) + omega_.capacity() * sizeof(Vec3);
+           q0_.capacity() * sizeof(Eigen::Quaterniond) + omega_.capacity() * sizeof(Vec3) +
+           spin_radius_.capacity() * sizeof(double);
   if (grid_) bytes += grid_->MemoryBytes();
   if (all_pairs_) bytes += all_pairs_->MemoryBytes();
   return bytes;

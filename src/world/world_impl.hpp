@@ -89,6 +89,7 @@ class World::Impl {
   std::vector<std::uint32_t> shape_;        // per body, into shapes_
   std::vector<Eigen::Quaterniond> q0_;      // per body: orientation at its segment start
   std::vector<Vec3> omega_;                 // per body: angular velocity, world frame
+  std::vector<double> spin_radius_;         // per body: SpinRadius of its current segment
   bool polyhedra_ = false;
   // Set while a body that touched a wall without approaching it predicts again: that wall is
   // then left alone for the time the body needs to close the tolerance band.

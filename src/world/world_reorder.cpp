@@ -56,6 +56,7 @@ void World::Impl::Reorder() {
     PermuteVector(shape_, old_of_new);
     PermuteVector(q0_, old_of_new);
     PermuteVector(omega_, old_of_new);
+    PermuteVector(spin_radius_, old_of_new);
   }
   PermuteVector(version_, old_of_new);
   PermuteVector(event_, old_of_new);
