@@ -49,6 +49,10 @@ struct RunResult {
   std::uint64_t steps = 0;  // Bullet steps, or sparsedyn events
   double wall = 0;          // s spent in stepSimulation / AdvanceTo
   double cpu = 0;           // thread CPU s of the same
+  // The start-up part of `cpu`: sparsedyn's initial prediction of every element (its first
+  // AdvanceTo, to t = 0), Bullet's first step (which builds its pair cache) covering dt of it.
+  double startup_cpu = 0;
+  double startup_sim = 0;
   double energy_drift = 0, max_energy_drift = 0, max_penetration = 0;
   std::optional<ProbeTotals> probe;
   std::optional<std::uint64_t> collisions;
@@ -109,6 +113,18 @@ std::optional<RunResult> RunSparsedyn(const SceneDescription& scene, double dura
   std::vector<Pose> poses(world->BodyCount());
   const double energy = world->KineticEnergy();
   const auto slices = static_cast<std::uint64_t>(std::llround(duration / probe_dt));
+  {
+    const Clock::time_point start = Clock::now();
+    const double cpu_start = ThreadCpuSeconds();
+    const Status started = world->AdvanceTo(0.0);
+    run.startup_cpu = ThreadCpuSeconds() - cpu_start;
+    run.cpu += run.startup_cpu;
+    run.wall += std::chrono::duration<double>(Clock::now() - start).count();
+    if (!started) {
+      std::printf("sparsedyn: failed: %s\n", started.error().message.c_str());
+      return std::nullopt;
+    }
+  }
   for (std::uint64_t k = 1; k <= slices; ++k) {
     const double t = k == slices ? duration : static_cast<double>(k) * probe_dt;
     const Clock::time_point start = Clock::now();
@@ -184,6 +200,10 @@ RunResult RunBullet(const SceneDescription& scene, double duration, double dt) {
     const double cpu_start = ThreadCpuSeconds();
     world.Step(dt);
     run.cpu += ThreadCpuSeconds() - cpu_start;
+    if (s == 0) {
+      run.startup_cpu = run.cpu;
+      run.startup_sim = dt;
+    }
     run.wall += std::chrono::duration<double>(Clock::now() - start).count();
 
     // Untimed: energy and the contact probe.
@@ -203,7 +223,8 @@ void PrintHeader() {
   std::printf(
       "engine,n,packing,seed,dt,duration,steps,wall_seconds,sim_per_wall,cpu_seconds,sim_per_cpu,"
       "energy_drift,max_energy_drift,max_penetration,contacts,penetrating,deep_contacts,"
-      "passed_through,escaped,missed,collisions,sparsedyn_speedup\n");
+      "passed_through,escaped,missed,collisions,sparsedyn_speedup,startup_cpu_seconds,"
+      "steady_sim_per_cpu,steady_speedup\n");
 }
 
 std::string Number(double value, const char* format = "%.6g") {
@@ -223,6 +244,15 @@ void PrintRow(const Options& o, double duration, const RunResult& r,
   std::string speedup;  // by CPU time, which other processes on the machine do not inflate
   if (ours && r.engine != "sparsedyn" && ours->cpu > 0 && cpu_speed > 0) {
     speedup = Number((duration / ours->cpu) / cpu_speed, "%.4g");
+  }
+  // The same without the start-up (steady state: what a longer run tends to).
+  auto steady = [duration](const RunResult& run) {
+    const double cpu = run.cpu - run.startup_cpu;
+    return cpu > 0 ? (duration - run.startup_sim) / cpu : 0.0;
+  };
+  std::string steady_speedup;
+  if (ours && r.engine != "sparsedyn" && steady(*ours) > 0 && steady(r) > 0) {
+    steady_speedup = Number(steady(*ours) / steady(r), "%.4g");
   }
   const ProbeTotals* p = r.probe ? &*r.probe : nullptr;
   auto probe = [p](std::uint64_t ProbeTotals::*field) {
@@ -249,7 +279,10 @@ void PrintRow(const Options& o, double duration, const RunResult& r,
                                           probe(&ProbeTotals::escaped),
                                           p ? Count(p->Missed()) : "",
                                           Count(r.collisions),
-                                          speedup};
+                                          speedup,
+                                          Number(r.startup_cpu),
+                                          Number(steady(r)),
+                                          steady_speedup};
   std::string line;
   for (const std::string& cell : cells) line += (line.empty() ? "" : ",") + cell;
   std::printf("%s\n", line.c_str());
