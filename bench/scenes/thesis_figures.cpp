@@ -36,6 +36,9 @@ constexpr double kFirstDt = 0.1;        // s
 // a located time off by 1e-9 s is amplified ~10x by every later collision of the bodies (the
 // scene is chaotic), yet far below any step, so a missed contact is never matched by luck.
 constexpr double kMatchTolerance = 1e-4;  // s
+// Two collisions of a pair this far apart are two encounters: after a bounce the bodies part at
+// ~1 m/s, so within a second they are a bounding diameter apart unless they strike again.
+constexpr double kEncounterGap = 1.0;  // s
 // Kind indices in Statistics::events_by_kind (EventKindName order).
 constexpr int kCellCrossing = 0;
 constexpr int kSphereMeet = 2;
@@ -103,6 +106,7 @@ struct ConventionalRun {
   bool equal = false;
   double cpu = 0;
   std::uint64_t collisions = 0;
+  sparsedyn::ConventionalStatistics stats;
   sparsedyn::bench::CollisionMatch match;
 };
 
@@ -126,6 +130,7 @@ ConventionalRun RunConventionalOnce(const sparsedyn::SceneDescription& scene, do
   if (auto ok = world.AdvanceTo(o.duration); !ok) Fail("conventional: " + ok.error().message);
   run.cpu = CpuSeconds() - start;
   run.collisions = found.size();
+  run.stats = world.Stats();
   run.match = sparsedyn::bench::MatchCollisions(reference.collisions, found, kMatchTolerance);
   run.equal = run.match.Same();
   return run;
@@ -167,13 +172,15 @@ const char* kCommonHeader =
     "figure,seed,duration,n,density,sparsedyn_cpu_per_sim_s,events,cell_crossings,"
     "stale_target_absent,stale_actor_absent,stale_fraction,stale_fraction_no_cells,"
     "stale_of_sphere_meets,meetings,"
-    "collisions,wall_collisions,collisions_per_s,collisions_per_body_s,meetings_per_body_s";
+    "collisions,wall_collisions,collisions_per_s,collisions_per_body_s,meetings_per_body_s,"
+    "encounters,encounters_per_body_s";
 
 void PrintCommon(const char* figure, std::uint32_t n, double density, const EventRun& r,
                  const Options& o) {
   const sparsedyn::Statistics& s = r.stats;
   const double t = o.duration;
-  std::printf("%s,%llu,%g,%u,%g,%.6g,%llu,%llu,%llu,%llu,%.4f,%.4f,%.4f,%llu,%llu,%llu,%.6g,%.6g,%.6g",
+  const std::uint64_t encounters = sparsedyn::bench::CountEncounters(r.collisions, kEncounterGap);
+  std::printf("%s,%llu,%g,%u,%g,%.6g,%llu,%llu,%llu,%llu,%.4f,%.4f,%.4f,%llu,%llu,%llu,%.6g,%.6g,%.6g,%llu,%.6g",
               figure, static_cast<unsigned long long>(o.seed), t, n, density, r.cpu / t,
               static_cast<unsigned long long>(s.events),
               static_cast<unsigned long long>(s.events_by_kind[kCellCrossing]),
@@ -184,14 +191,17 @@ void PrintCommon(const char* figure, std::uint32_t n, double density, const Even
               static_cast<unsigned long long>(s.collisions),
               static_cast<unsigned long long>(s.wall_collisions),
               static_cast<double>(s.collisions) / t, static_cast<double>(s.collisions) / (n * t),
-              static_cast<double>(s.meetings) / (n * t));
+              static_cast<double>(s.meetings) / (n * t),
+              static_cast<unsigned long long>(encounters),
+              static_cast<double>(encounters) / (n * t));
 }
 
 void FigureN(const Options& o) {
   std::printf("%s,sparse_s_per_sim_s,detailed_s_per_sim_s,response_s_per_sim_s,"
               "queue_s_per_sim_s,profiled_cpu_per_sim_s,conv_dt,conv_digits,conv_equal,"
               "conv_halvings,conv_cpu_per_sim_s,conv_collisions,conv_missing,conv_spurious,"
-              "conv_over_sparsedyn\n", kCommonHeader);
+              "conv_over_sparsedyn,conv_steps,conv_pair_tests,conv_narrow_queries,"
+              "conv_bisection_evaluations\n", kCommonHeader);
   std::vector<double> xs, ys;
   for (std::uint32_t n : o.ns) {
     std::fprintf(stderr, "N=%u D=%g\n", n, o.density);
@@ -205,12 +215,17 @@ void FigureN(const Options& o) {
                 p.seconds_response / t, p.seconds_queue / t, profiled.cpu / t);
     if (o.conventional) {
       const ConventionalRun c = SearchEqualAccuracy(scene, plain, o);
-      std::printf(",%g,%d,%d,%d,%.6g,%llu,%llu,%llu,%.4g\n", c.dt, c.digits, c.equal ? 1 : 0,
-                  c.halvings, c.cpu / t, static_cast<unsigned long long>(c.collisions),
+      std::printf(",%g,%d,%d,%d,%.6g,%llu,%llu,%llu,%.4g,%llu,%llu,%llu,%llu\n", c.dt, c.digits,
+                  c.equal ? 1 : 0, c.halvings, c.cpu / t,
+                  static_cast<unsigned long long>(c.collisions),
                   static_cast<unsigned long long>(c.match.missing),
-                  static_cast<unsigned long long>(c.match.spurious), c.cpu / plain.cpu);
+                  static_cast<unsigned long long>(c.match.spurious), c.cpu / plain.cpu,
+                  static_cast<unsigned long long>(c.stats.steps),
+                  static_cast<unsigned long long>(c.stats.pair_tests),
+                  static_cast<unsigned long long>(c.stats.narrow_queries),
+                  static_cast<unsigned long long>(c.stats.bisection_evaluations));
     } else {
-      std::printf(",,,,,,,,,\n");
+      std::printf(",,,,,,,,,,,,,\n");
     }
     std::fflush(stdout);
     xs.push_back(n);
@@ -224,24 +239,38 @@ void FigureN(const Options& o) {
 }
 
 void FigureDensity(const Options& o) {
-  std::printf("%s,law_x\n", kCommonHeader);
-  std::vector<double> xs, collisions, meetings;
+  std::printf("%s,law_x,box_side,density_accessible,law_x_accessible\n", kCommonHeader);
+  std::vector<double> xs, xs_accessible, collisions, encounters;
   for (double d : o.densities) {
     std::fprintf(stderr, "N=%u D=%g\n", o.n, d);
     const EventRun run = RunEvent(Scene(o.n, d, o), false, o);
     const double x = d / (1 - d);  // App. I.1: C/N proportional to D/(1 - D)
+    // A centre stays a bounding radius (1) from the walls: the spheres fill the box of side
+    // L - 2 that their centres can reach to L^3 / (L - 2)^3 times D, not D.
+    const double side = sparsedyn::scenes::ThesisBoxSide({.n = o.n, .packing = d});
+    const double accessible = d * std::pow(side / (side - 2), 3);
+    const double x_accessible = accessible / (1 - accessible);
     PrintCommon("density", o.n, d, run, o);
-    std::printf(",%.6g\n", x);
+    std::printf(",%.6g,%.6g,%.6g,%.6g\n", x, side, accessible, x_accessible);
     std::fflush(stdout);
     xs.push_back(x);
+    xs_accessible.push_back(x_accessible);
     collisions.push_back(static_cast<double>(run.stats.collisions) / (o.n * o.duration));
-    meetings.push_back(static_cast<double>(run.stats.meetings) / (o.n * o.duration));
+    encounters.push_back(
+        static_cast<double>(sparsedyn::bench::CountEncounters(run.collisions, kEncounterGap)) /
+        (o.n * o.duration));
   }
   if (xs.size() >= 2) {
     const auto c = sparsedyn::bench::FitProportional(xs, collisions);
-    const auto m = sparsedyn::bench::FitProportional(xs, meetings);
+    const auto e = sparsedyn::bench::FitProportional(xs, encounters);
     std::fprintf(stderr, "fit,I.1,collisions_per_body_s = %.5g D/(1-D),R2=%.5f\n", c.k, c.r2);
-    std::fprintf(stderr, "fit,I.1,meetings_per_body_s = %.5g D/(1-D),R2=%.5f\n", m.k, m.r2);
+    std::fprintf(stderr, "fit,I.1,encounters_per_body_s = %.5g D/(1-D),R2=%.5f\n", e.k, e.r2);
+    const auto ca = sparsedyn::bench::FitProportional(xs_accessible, collisions);
+    const auto ea = sparsedyn::bench::FitProportional(xs_accessible, encounters);
+    std::fprintf(stderr, "fit,I.1,collisions_per_body_s = %.5g Da/(1-Da),R2=%.5f (Da: accessible "
+                 "box)\n", ca.k, ca.r2);
+    std::fprintf(stderr, "fit,I.1,encounters_per_body_s = %.5g Da/(1-Da),R2=%.5f (Da: accessible "
+                 "box)\n", ea.k, ea.r2);
     std::fprintf(stderr, "law,I.1,3 sqrt(2)/2 = %.5g (spheres of the bounding radius)\n",
                  1.5 * std::sqrt(2.0));
   }

@@ -70,4 +70,22 @@ inline CollisionMatch MatchCollisions(std::vector<CollisionRecord> reference,
   return match;
 }
 
+/// Body-body collisions that begin an encounter: the pair had not collided within the `gap`
+/// before. Rotating polyhedra may strike twice or more while their spheres overlap; this counts
+/// such a run of strikes once, as kinetic theory counts a collision of two spheres.
+inline std::uint64_t CountEncounters(std::vector<CollisionRecord> collisions, double gap) {
+  std::sort(collisions.begin(), collisions.end(), [](const auto& x, const auto& y) {
+    return std::tie(x.wall, x.a, x.b, x.t) < std::tie(y.wall, y.a, y.b, y.t);
+  });
+  std::uint64_t encounters = 0;
+  for (std::size_t i = 0; i < collisions.size(); ++i) {
+    const CollisionRecord& c = collisions[i];
+    if (c.wall) continue;
+    const bool same_pair = i > 0 && !collisions[i - 1].wall && collisions[i - 1].a == c.a &&
+                           collisions[i - 1].b == c.b;
+    if (!same_pair || c.t - collisions[i - 1].t > gap) ++encounters;
+  }
+  return encounters;
+}
+
 }  // namespace sparsedyn::bench
