@@ -86,22 +86,23 @@ set key top left box opaque
 set xlabel "N (bodies)"
 set ylabel "CPU s per simulated s"
 set format y "10^{%L}"
-plot "$csv_n" using "n":"conv_cpu_per_sim_s" with linespoints lw 2 pt 5 lc rgb "#1f77b4" title "conventional (equal accuracy: dt halved until it finds sparsedyn's collisions)", \
+set key bottom right box opaque
+plot "$csv_n" using "n":"conv_cpu_per_sim_s" with linespoints lw 2 pt 5 lc rgb "#1f77b4" title "conventional at equal accuracy", \
      "" using "n":"sparsedyn_cpu_per_sim_s" with linespoints lw 2 pt 7 lc rgb "#d62728" title "sparsedyn"
 set ylabel "conventional / sparsedyn"
 unset logscale y
 set format y "%g"
 set yrange [0:*]
-set key top right
-plot "$csv_n" using "n":"conv_over_sparsedyn" with linespoints lw 2 pt 7 lc rgb "#2ca02c" title "CPU time ratio", \
-     "" using "n":"conv_over_sparsedyn":(sprintf("dt %g", column("conv_dt"))) with labels offset 0,1 font "Sans,9" notitle
+set key top left
+plot "$csv_n" using "n":"conv_over_sparsedyn" with linespoints lw 2 pt 7 lc rgb "#2ca02c" title "CPU time ratio (labels: the conventional step dt)", \
+     "" using "n":"conv_over_sparsedyn":(sprintf("%g", column("conv_dt"))) with labels offset 0,-1.1 font "Sans,9" notitle
 unset multiplot
 EOF
 
 plot <<EOF
 set terminal pngcairo size 900,560 font "Sans,11"
 set output "$out/thesis_7_1_breakdown.png"
-set title "Thesis §7.1: sparsedyn's cost by phase (cumulative), D = 0.05, profile_phases on"
+set title "Thesis §7.1: sparsedyn's cost by phase, cumulative (D = 0.05, WorldSettings::profile_phases)" noenhanced
 set logscale xy
 set grid xtics ytics mytics lc rgb "#dddddd"
 set key top left box opaque
@@ -143,7 +144,8 @@ kc = 2; km = 2
 fit kc * f(x) "$csv_d" using "density":"collisions_per_body_s" via kc
 fit km * f(x) "$csv_d" using "density":"encounters_per_body_s" via km
 law = 3 * sqrt(2) / 2
-set title "Thesis App. I.1: collisions per body per simulated second against density D (N fixed)"
+stats "$csv_d" using "n" name "N" nooutput
+set title sprintf("Thesis App. I.1: collisions per body per simulated second against density D, N = %d", N_max)
 set grid xtics ytics lc rgb "#dddddd"
 set key top left box opaque
 set xlabel "D (fraction of the box filled by bounding spheres)"
@@ -162,24 +164,23 @@ plot <<EOF
 set terminal pngcairo size 1300,520 font "Sans,11"
 set output "$out/thesis_stale_fraction.png"
 set multiplot layout 1,2 title "Stale events (§4.2; the thesis saw 20-50 %)"
+set key below
 set grid xtics ytics lc rgb "#dddddd"
-set key top left box opaque
-set ylabel "fraction"
+set ylabel "stale events"
 set yrange [0:*]
-set format y "%.0%%"
-set format y "%g"
+set format y "%.0f %%"
 set logscale x
 set xlabel "N (bodies), D = 0.05"
-plot "$csv_n" using "n":"stale_fraction" with linespoints lw 2 pt 7 lc rgb "#d62728" title "stale / all events", \
-     "" using "n":"stale_fraction_no_cells" with linespoints lw 2 pt 5 lc rgb "#ff7f0e" title "stale / events other than cell crossings", \
-     "" using "n":"stale_of_sphere_meets" with linespoints lw 2 pt 9 lc rgb "#1f77b4" title "stale / sphere-meet events"
+plot "$csv_n" using "n":(100 * column("stale_fraction")) with linespoints lw 2 pt 7 lc rgb "#d62728" title "stale / all events", \
+     "" using "n":(100 * column("stale_fraction_no_cells")) with linespoints lw 2 pt 5 lc rgb "#ff7f0e" title "stale / events other than cell crossings", \
+     "" using "n":(100 * column("stale_of_sphere_meets")) with linespoints lw 2 pt 9 lc rgb "#1f77b4" title "stale / sphere-meet events"
 unset logscale x
-set xlabel sprintf("D, N = %d", 0)
+set xrange [0:*]
 stats "$csv_d" using "n" name "N" nooutput
 set xlabel sprintf("D, N = %d", N_max)
-plot "$csv_d" using "density":"stale_fraction" with linespoints lw 2 pt 7 lc rgb "#d62728" title "stale / all events", \
-     "" using "density":"stale_fraction_no_cells" with linespoints lw 2 pt 5 lc rgb "#ff7f0e" title "stale / events other than cell crossings", \
-     "" using "density":"stale_of_sphere_meets" with linespoints lw 2 pt 9 lc rgb "#1f77b4" title "stale / sphere-meet events"
+plot "$csv_d" using "density":(100 * column("stale_fraction")) with linespoints lw 2 pt 7 lc rgb "#d62728" title "stale / all events", \
+     "" using "density":(100 * column("stale_fraction_no_cells")) with linespoints lw 2 pt 5 lc rgb "#ff7f0e" title "stale / events other than cell crossings", \
+     "" using "density":(100 * column("stale_of_sphere_meets")) with linespoints lw 2 pt 9 lc rgb "#1f77b4" title "stale / sphere-meet events"
 unset multiplot
 EOF
 echo "wrote $out/thesis_*.png" >&2

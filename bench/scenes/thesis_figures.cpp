@@ -8,6 +8,7 @@
 // One CSV row per run on stdout (the conditions in every row); fits and progress on stderr.
 #include <time.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -53,6 +54,7 @@ struct Options {
   std::vector<double> densities = {0.01, 0.02, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3};
   double conventional_budget = 120;  // CPU s one conventional run may take before we stop halving
   bool conventional = true;
+  int repeats = 3;  // event-driven runs per point; the least time is kept
 };
 
 double CpuSeconds() {
@@ -85,7 +87,7 @@ struct EventRun {
   std::vector<CollisionRecord> collisions;
 };
 
-EventRun RunEvent(sparsedyn::SceneDescription scene, bool profile, const Options& o) {
+EventRun RunEventOnce(sparsedyn::SceneDescription scene, bool profile, const Options& o) {
   scene.settings.profile_phases = profile;
   auto world = sparsedyn::BuildWorld(scene);
   if (!world) Fail("BuildWorld: " + world.error().message);
@@ -96,6 +98,23 @@ EventRun RunEvent(sparsedyn::SceneDescription scene, bool profile, const Options
   run.cpu = CpuSeconds() - start;
   run.stats = world->Stats();
   return run;
+}
+
+// The run repeated o.repeats times (the same events each time: deterministic), keeping the least
+// CPU time and, per phase, the least seconds: other jobs on the machine only ever add time, and
+// the phase timers read the wall clock, which counts the time the process waited for a core.
+EventRun RunEvent(const sparsedyn::SceneDescription& scene, bool profile, const Options& o) {
+  EventRun best = RunEventOnce(scene, profile, o);
+  for (int k = 1; k < o.repeats; ++k) {
+    const EventRun run = RunEventOnce(scene, profile, o);
+    best.cpu = std::min(best.cpu, run.cpu);
+    sparsedyn::Statistics& s = best.stats;
+    s.seconds_sparse = std::min(s.seconds_sparse, run.stats.seconds_sparse);
+    s.seconds_detailed = std::min(s.seconds_detailed, run.stats.seconds_detailed);
+    s.seconds_response = std::min(s.seconds_response, run.stats.seconds_response);
+    s.seconds_queue = std::min(s.seconds_queue, run.stats.seconds_queue);
+  }
+  return best;
 }
 
 // The equal-accuracy search's outcome: the step it ended at and whether that step was equal.
@@ -305,6 +324,7 @@ Options Parse(int argc, char** argv) {
     else if (arg == "--densities") o.densities = ParseList<double>(next());
     else if (arg == "--budget") o.conventional_budget = std::stod(next());
     else if (arg == "--no-conventional") o.conventional = false;
+    else if (arg == "--repeats") o.repeats = std::max(1, std::stoi(next()));
     else if (arg == "--large") o.ns.insert(o.ns.end(), {32000, 64000});
     else if (arg == "--quick") {
       o.ns = {125, 250, 500, 1000, 2000};
@@ -312,10 +332,11 @@ Options Parse(int argc, char** argv) {
       o.n = 250;
       o.duration = 2.0;
       o.conventional_budget = 5;
+      o.repeats = 1;
     } else {
       Fail("usage: thesis_figures [--figure n|density] [--quick] [--large] [--seed S] "
            "[--duration T] [--density D] [--ns N,N,..] [--n N] [--densities D,D,..] "
-           "[--budget CPU_S] [--no-conventional]");
+           "[--budget CPU_S] [--no-conventional] [--repeats K]");
     }
   }
   return o;
