@@ -81,6 +81,9 @@ set terminal pngcairo size 1300,520 font "Sans,11"
 set output "$out/thesis_7_0_time_vs_n.png"
 set multiplot layout 1,2 title "Thesis §7.0 on the thesis scene (D = 0.05, seed 1): CPU time per simulated second, conventional method at equal accuracy"
 set logscale xy
+set autoscale xfix
+set offsets graph 0.04, graph 0.04, 0, 0
+set xtics (125, 250, 500, 1000, 2000, 4000, 8000, 16000, 32000, 64000) rotate by -30
 set grid xtics ytics mytics lc rgb "#dddddd"
 set key top left box opaque
 set xlabel "N (bodies)"
@@ -100,13 +103,17 @@ unset multiplot
 EOF
 
 plot <<EOF
-set terminal pngcairo size 900,560 font "Sans,11"
+set terminal pngcairo size 1400,560 font "Sans,11"
 set output "$out/thesis_7_1_breakdown.png"
-set title "Thesis §7.1: sparsedyn's cost by phase, cumulative (D = 0.05, WorldSettings::profile_phases)" noenhanced
+set multiplot layout 1,2 title "Thesis §7.1: sparsedyn's cost by phase (D = 0.05; WorldSettings::profile_phases; least of three runs)" noenhanced
 set logscale xy
+set autoscale xfix
+set offsets graph 0.04, graph 0.04, 0, 0
+set xtics (125, 250, 500, 1000, 2000, 4000, 8000, 16000, 32000, 64000) rotate by -30
 set grid xtics ytics mytics lc rgb "#dddddd"
 set key top left box opaque
 set xlabel "N (bodies)"
+set title "cumulative"
 set ylabel "CPU s per simulated s"
 set format y "10^{%L}"
 plot "$csv_n" using "n":"sparse_s_per_sim_s" with linespoints lw 2 dt 3 pt 7 lc rgb "#1f77b4" title "sparse (predictions)", \
@@ -114,6 +121,18 @@ plot "$csv_n" using "n":"sparse_s_per_sim_s" with linespoints lw 2 dt 3 pt 7 lc 
      "" using "n":(column("sparse_s_per_sim_s") + column("detailed_s_per_sim_s") + column("response_s_per_sim_s")) with linespoints lw 2 dt 4 pt 9 lc rgb "#2ca02c" title "+ response", \
      "" using "n":(column("sparse_s_per_sim_s") + column("detailed_s_per_sim_s") + column("response_s_per_sim_s") + column("queue_s_per_sim_s")) with linespoints lw 2 pt 13 lc rgb "#9467bd" title "+ queue", \
      "" using "n":"profiled_cpu_per_sim_s" with linespoints lw 2.5 pt 7 lc rgb "#d62728" title "whole run (CPU time of AdvanceTo)"
+set title "share of the whole run"
+unset logscale y
+set format y "%.0f %%"
+set yrange [0:100]
+set ylabel "per cent of the whole run's CPU time"
+set key top right box opaque
+share(c) = 100 * column(c) / column("profiled_cpu_per_sim_s")
+plot "$csv_n" using "n":(share("detailed_s_per_sim_s")) with linespoints lw 2 pt 5 lc rgb "#ff7f0e" title "detailed", \
+     "" using "n":(share("sparse_s_per_sim_s")) with linespoints lw 2 pt 7 lc rgb "#1f77b4" title "sparse", \
+     "" using "n":(share("response_s_per_sim_s")) with linespoints lw 2 pt 9 lc rgb "#2ca02c" title "response", \
+     "" using "n":(share("queue_s_per_sim_s")) with linespoints lw 2 pt 13 lc rgb "#9467bd" title "queue"
+unset multiplot
 EOF
 
 plot <<EOF
@@ -170,11 +189,15 @@ set ylabel "stale events"
 set yrange [0:*]
 set format y "%.0f %%"
 set logscale x
+set autoscale xfix
+set offsets graph 0.04, graph 0.04, 0, 0
+set xtics (125, 250, 500, 1000, 2000, 4000, 8000, 16000, 32000, 64000) rotate by -30
 set xlabel "N (bodies), D = 0.05"
 plot "$csv_n" using "n":(100 * column("stale_fraction")) with linespoints lw 2 pt 7 lc rgb "#d62728" title "stale / all events", \
      "" using "n":(100 * column("stale_fraction_no_cells")) with linespoints lw 2 pt 5 lc rgb "#ff7f0e" title "stale / events other than cell crossings", \
      "" using "n":(100 * column("stale_of_sphere_meets")) with linespoints lw 2 pt 9 lc rgb "#1f77b4" title "stale / sphere-meet events"
 unset logscale x
+set offsets 0, 0, 0, 0
 set xrange [0:*]
 stats "$csv_d" using "n" name "N" nooutput
 set xlabel sprintf("D, N = %d", N_max)
