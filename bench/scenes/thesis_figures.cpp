@@ -47,9 +47,9 @@ constexpr int kSphereMeet = 2;
 struct Options {
   std::string figure = "n";
   std::uint64_t seed = 1;
-  double duration = 4.0;           // simulated s per run
-  double density = 0.05;           // --figure n
-  std::uint32_t n = 1000;          // --figure density
+  double duration = 4.0;   // simulated s per run
+  double density = 0.05;   // --figure n
+  std::uint32_t n = 1000;  // --figure density
   std::vector<std::uint32_t> ns = {125, 250, 500, 1000, 2000, 4000, 8000, 16000};
   std::vector<double> densities = {0.01, 0.02, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3};
   double conventional_budget = 120;  // CPU s one conventional run may take before we stop halving
@@ -62,6 +62,9 @@ double CpuSeconds() {
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
+
+// A counter as printf's %llu takes it.
+unsigned long long Count(std::uint64_t value) { return value; }
 
 [[noreturn]] void Fail(const std::string& message) {
   std::fprintf(stderr, "thesis_figures: %s\n", message.c_str());
@@ -92,7 +95,8 @@ EventRun RunEventOnce(sparsedyn::SceneDescription scene, bool profile, const Opt
   auto world = sparsedyn::BuildWorld(scene);
   if (!world) Fail("BuildWorld: " + world.error().message);
   EventRun run;
-  world->OnCollision([&](const sparsedyn::CollisionEvent& e) { run.collisions.push_back(Record(e)); });
+  world->OnCollision(
+      [&](const sparsedyn::CollisionEvent& e) { run.collisions.push_back(Record(e)); });
   const double start = CpuSeconds();
   if (auto ok = world->AdvanceTo(o.duration); !ok) Fail("AdvanceTo: " + ok.error().message);
   run.cpu = CpuSeconds() - start;
@@ -163,19 +167,19 @@ ConventionalRun SearchEqualAccuracy(const sparsedyn::SceneDescription& scene,
   for (int halvings = 0;; ++halvings) {
     run = RunConventionalOnce(scene, kFirstDt * std::pow(0.5, halvings), reference, o);
     run.halvings = halvings;
-    std::fprintf(stderr, "  conventional dt=%g digits=%d cpu=%.2fs collisions=%llu missing=%llu "
-                 "spurious=%llu\n", run.dt, run.digits, run.cpu,
-                 static_cast<unsigned long long>(run.collisions),
-                 static_cast<unsigned long long>(run.match.missing),
-                 static_cast<unsigned long long>(run.match.spurious));
+    std::fprintf(stderr,
+                 "  conventional dt=%g digits=%d cpu=%.2fs collisions=%llu missing=%llu "
+                 "spurious=%llu\n",
+                 run.dt, run.digits, run.cpu, Count(run.collisions), Count(run.match.missing),
+                 Count(run.match.spurious));
     if (run.equal || 2 * run.cpu > o.conventional_budget) return run;
   }
 }
 
 double StaleFraction(const sparsedyn::Statistics& s, bool without_cells) {
   const double stale = static_cast<double>(s.stale_target_absent + s.stale_actor_absent);
-  const auto events = static_cast<double>(
-      s.events - (without_cells ? s.events_by_kind[kCellCrossing] : 0));
+  const auto events =
+      static_cast<double>(s.events - (without_cells ? s.events_by_kind[kCellCrossing] : 0));
   return events > 0 ? stale / events : 0.0;
 }
 
@@ -199,28 +203,26 @@ void PrintCommon(const char* figure, std::uint32_t n, double density, const Even
   const sparsedyn::Statistics& s = r.stats;
   const double t = o.duration;
   const std::uint64_t encounters = sparsedyn::bench::CountEncounters(r.collisions, kEncounterGap);
-  std::printf("%s,%llu,%g,%u,%g,%.6g,%llu,%llu,%llu,%llu,%.4f,%.4f,%.4f,%llu,%llu,%llu,%.6g,%.6g,%.6g,%llu,%.6g",
-              figure, static_cast<unsigned long long>(o.seed), t, n, density, r.cpu / t,
-              static_cast<unsigned long long>(s.events),
-              static_cast<unsigned long long>(s.events_by_kind[kCellCrossing]),
-              static_cast<unsigned long long>(s.stale_target_absent),
-              static_cast<unsigned long long>(s.stale_actor_absent), StaleFraction(s, false),
-              StaleFraction(s, true), StaleOfSphereMeets(s),
-              static_cast<unsigned long long>(s.meetings),
-              static_cast<unsigned long long>(s.collisions),
-              static_cast<unsigned long long>(s.wall_collisions),
-              static_cast<double>(s.collisions) / t, static_cast<double>(s.collisions) / (n * t),
-              static_cast<double>(s.meetings) / (n * t),
-              static_cast<unsigned long long>(encounters),
-              static_cast<double>(encounters) / (n * t));
+  std::printf(
+      "%s,%llu,%g,%u,%g,%.6g,%llu,%llu,%llu,%llu,%.4f,%.4f,%.4f,%llu,%llu,%llu,%.6g,%.6g,%.6g,%llu,"
+      "%.6g",
+      figure, Count(o.seed), t, n, density, r.cpu / t, Count(s.events),
+      Count(s.events_by_kind[kCellCrossing]), Count(s.stale_target_absent),
+      Count(s.stale_actor_absent), StaleFraction(s, false), StaleFraction(s, true),
+      StaleOfSphereMeets(s), Count(s.meetings), Count(s.collisions), Count(s.wall_collisions),
+      static_cast<double>(s.collisions) / t, static_cast<double>(s.collisions) / (n * t),
+      static_cast<double>(s.meetings) / (n * t), Count(encounters),
+      static_cast<double>(encounters) / (n * t));
 }
 
 void FigureN(const Options& o) {
-  std::printf("%s,sparse_s_per_sim_s,detailed_s_per_sim_s,response_s_per_sim_s,"
-              "queue_s_per_sim_s,profiled_cpu_per_sim_s,conv_dt,conv_digits,conv_equal,"
-              "conv_halvings,conv_cpu_per_sim_s,conv_collisions,conv_missing,conv_spurious,"
-              "conv_over_sparsedyn,conv_steps,conv_pair_tests,conv_narrow_queries,"
-              "conv_bisection_evaluations\n", kCommonHeader);
+  std::printf(
+      "%s,sparse_s_per_sim_s,detailed_s_per_sim_s,response_s_per_sim_s,"
+      "queue_s_per_sim_s,profiled_cpu_per_sim_s,conv_dt,conv_digits,conv_equal,"
+      "conv_halvings,conv_cpu_per_sim_s,conv_collisions,conv_missing,conv_spurious,"
+      "conv_over_sparsedyn,conv_steps,conv_pair_tests,conv_narrow_queries,"
+      "conv_bisection_evaluations\n",
+      kCommonHeader);
   std::vector<double> xs, ys;
   for (std::uint32_t n : o.ns) {
     std::fprintf(stderr, "N=%u D=%g\n", n, o.density);
@@ -235,14 +237,10 @@ void FigureN(const Options& o) {
     if (o.conventional) {
       const ConventionalRun c = SearchEqualAccuracy(scene, plain, o);
       std::printf(",%g,%d,%d,%d,%.6g,%llu,%llu,%llu,%.4g,%llu,%llu,%llu,%llu\n", c.dt, c.digits,
-                  c.equal ? 1 : 0, c.halvings, c.cpu / t,
-                  static_cast<unsigned long long>(c.collisions),
-                  static_cast<unsigned long long>(c.match.missing),
-                  static_cast<unsigned long long>(c.match.spurious), c.cpu / plain.cpu,
-                  static_cast<unsigned long long>(c.stats.steps),
-                  static_cast<unsigned long long>(c.stats.pair_tests),
-                  static_cast<unsigned long long>(c.stats.narrow_queries),
-                  static_cast<unsigned long long>(c.stats.bisection_evaluations));
+                  c.equal ? 1 : 0, c.halvings, c.cpu / t, Count(c.collisions),
+                  Count(c.match.missing), Count(c.match.spurious), c.cpu / plain.cpu,
+                  Count(c.stats.steps), Count(c.stats.pair_tests), Count(c.stats.narrow_queries),
+                  Count(c.stats.bisection_evaluations));
     } else {
       std::printf(",,,,,,,,,,,,,\n");
     }
@@ -286,10 +284,14 @@ void FigureDensity(const Options& o) {
     std::fprintf(stderr, "fit,I.1,encounters_per_body_s = %.5g D/(1-D),R2=%.5f\n", e.k, e.r2);
     const auto ca = sparsedyn::bench::FitProportional(xs_accessible, collisions);
     const auto ea = sparsedyn::bench::FitProportional(xs_accessible, encounters);
-    std::fprintf(stderr, "fit,I.1,collisions_per_body_s = %.5g Da/(1-Da),R2=%.5f (Da: accessible "
-                 "box)\n", ca.k, ca.r2);
-    std::fprintf(stderr, "fit,I.1,encounters_per_body_s = %.5g Da/(1-Da),R2=%.5f (Da: accessible "
-                 "box)\n", ea.k, ea.r2);
+    std::fprintf(stderr,
+                 "fit,I.1,collisions_per_body_s = %.5g Da/(1-Da),R2=%.5f (Da: accessible "
+                 "box)\n",
+                 ca.k, ca.r2);
+    std::fprintf(stderr,
+                 "fit,I.1,encounters_per_body_s = %.5g Da/(1-Da),R2=%.5f (Da: accessible "
+                 "box)\n",
+                 ea.k, ea.r2);
     std::fprintf(stderr, "law,I.1,3 sqrt(2)/2 = %.5g (spheres of the bounding radius)\n",
                  1.5 * std::sqrt(2.0));
   }
@@ -315,17 +317,28 @@ Options Parse(int argc, char** argv) {
       if (i + 1 >= argc) Fail("missing value after " + arg);
       return argv[++i];
     };
-    if (arg == "--figure") o.figure = next();
-    else if (arg == "--seed") o.seed = std::stoull(next());
-    else if (arg == "--duration") o.duration = std::stod(next());
-    else if (arg == "--density") o.density = std::stod(next());
-    else if (arg == "--n") o.n = static_cast<std::uint32_t>(std::stoul(next()));
-    else if (arg == "--ns") o.ns = ParseList<std::uint32_t>(next());
-    else if (arg == "--densities") o.densities = ParseList<double>(next());
-    else if (arg == "--budget") o.conventional_budget = std::stod(next());
-    else if (arg == "--no-conventional") o.conventional = false;
-    else if (arg == "--repeats") o.repeats = std::max(1, std::stoi(next()));
-    else if (arg == "--large") o.ns.insert(o.ns.end(), {32000, 64000});
+    if (arg == "--figure")
+      o.figure = next();
+    else if (arg == "--seed")
+      o.seed = std::stoull(next());
+    else if (arg == "--duration")
+      o.duration = std::stod(next());
+    else if (arg == "--density")
+      o.density = std::stod(next());
+    else if (arg == "--n")
+      o.n = static_cast<std::uint32_t>(std::stoul(next()));
+    else if (arg == "--ns")
+      o.ns = ParseList<std::uint32_t>(next());
+    else if (arg == "--densities")
+      o.densities = ParseList<double>(next());
+    else if (arg == "--budget")
+      o.conventional_budget = std::stod(next());
+    else if (arg == "--no-conventional")
+      o.conventional = false;
+    else if (arg == "--repeats")
+      o.repeats = std::max(1, std::stoi(next()));
+    else if (arg == "--large")
+      o.ns.insert(o.ns.end(), {32000, 64000});
     else if (arg == "--quick") {
       o.ns = {125, 250, 500, 1000, 2000};
       o.densities = {0.02, 0.05, 0.1, 0.2};
@@ -334,9 +347,10 @@ Options Parse(int argc, char** argv) {
       o.conventional_budget = 5;
       o.repeats = 1;
     } else {
-      Fail("usage: thesis_figures [--figure n|density] [--quick] [--large] [--seed S] "
-           "[--duration T] [--density D] [--ns N,N,..] [--n N] [--densities D,D,..] "
-           "[--budget CPU_S] [--no-conventional] [--repeats K]");
+      Fail(
+          "usage: thesis_figures [--figure n|density] [--quick] [--large] [--seed S] "
+          "[--duration T] [--density D] [--ns N,N,..] [--n N] [--densities D,D,..] "
+          "[--budget CPU_S] [--no-conventional] [--repeats K]");
     }
   }
   return o;
@@ -346,8 +360,11 @@ Options Parse(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   const Options o = Parse(argc, argv);
-  if (o.figure == "n") FigureN(o);
-  else if (o.figure == "density") FigureDensity(o);
-  else Fail("--figure must be n or density");
+  if (o.figure == "n")
+    FigureN(o);
+  else if (o.figure == "density")
+    FigureDensity(o);
+  else
+    Fail("--figure must be n or density");
   return 0;
 }

@@ -39,8 +39,7 @@ struct CollisionMatch {
 /// with a wall) in one list is the k-th in the other when their times differ by at most
 /// `time_tolerance`. Near-simultaneous collisions of different pairs may come in either order.
 inline CollisionMatch MatchCollisions(std::vector<CollisionRecord> reference,
-                                      std::vector<CollisionRecord> other,
-                                      double time_tolerance) {
+                                      std::vector<CollisionRecord> other, double time_tolerance) {
   const auto by_pair = [](const CollisionRecord& x, const CollisionRecord& y) {
     return std::tie(x.wall, x.a, x.b, x.t) < std::tie(y.wall, y.a, y.b, y.t);
   };
