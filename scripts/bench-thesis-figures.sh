@@ -89,15 +89,22 @@ set key top left box opaque
 set xlabel "N (bodies)"
 set ylabel "CPU s per simulated s"
 set format y "10^{%L}"
-set key bottom right box opaque
-plot "$csv_n" using "n":"conv_cpu_per_sim_s" with linespoints lw 2 pt 5 lc rgb "#1f77b4" title "conventional at equal accuracy", \
+set key top left box opaque
+# A search that stopped on its budget (conv_equal = 0) is drawn apart: not equal accuracy.
+equal(c) = column("conv_equal") == 1 ? column(c) : 1/0
+unequal(c) = column("conv_equal") == 0 ? column(c) : 1/0
+set offsets graph 0.04, graph 0.04, graph 0.3, 0
+plot "$csv_n" using "n":(equal("conv_cpu_per_sim_s")) with linespoints lw 2 pt 5 lc rgb "#1f77b4" title "conventional at equal accuracy", \
+     "" using "n":(unequal("conv_cpu_per_sim_s")) with points pt 4 ps 1.5 lc rgb "#1f77b4" title "conventional, equal accuracy not reached (last dt)", \
      "" using "n":"sparsedyn_cpu_per_sim_s" with linespoints lw 2 pt 7 lc rgb "#d62728" title "sparsedyn"
 set ylabel "conventional / sparsedyn"
 unset logscale y
 set format y "%g"
 set yrange [0:*]
 set key top left
-plot "$csv_n" using "n":"conv_over_sparsedyn" with linespoints lw 2 pt 7 lc rgb "#2ca02c" title "CPU time ratio (labels: the conventional step dt)", \
+set offsets graph 0.04, graph 0.04, graph 0.25, 0
+plot "$csv_n" using "n":(equal("conv_over_sparsedyn")) with linespoints lw 2 pt 7 lc rgb "#2ca02c" title "CPU time ratio (labels: the conventional step dt)", \
+     "" using "n":(unequal("conv_over_sparsedyn")) with points pt 6 ps 1.5 lc rgb "#2ca02c" title "not at equal accuracy", \
      "" using "n":"conv_over_sparsedyn":(sprintf("%g", column("conv_dt"))) with labels offset 0,-1.1 font "Sans,9" notitle
 unset multiplot
 EOF
