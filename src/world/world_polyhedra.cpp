@@ -265,6 +265,10 @@ bool World::Impl::CollidePolyhedra(std::uint32_t a, std::uint32_t b,
     on_collision_(CollisionEvent{now_, PublicId(a), PublicId(b), -1, result.point, contact.normal,
                                  result.normal_impulse});
   }
+  // Both bodies' element predictions are superseded (actor-absent, §4.2), replaced in place.
+  for (const std::uint32_t body : {a, b}) {
+    if (event_[body].kind != EventKind::kNone) ++stats_.stale_actor_absent;
+  }
   PredictFull(a);
   PredictFull(b);
   PredictEngagementsOf(a);

@@ -220,6 +220,9 @@ TEST(PolyhedraWorld, ElasticBoxKeepsEnergyAndNeverInterpenetrates) {
   EXPECT_LE(checks.worst_penetration, 1e-9 * 2);  // tolerance x (r_a + r_b), radii 1
   EXPECT_EQ(world.Stats().walk_cap_hits, 0u);
   EXPECT_GT(world.Stats().wall_collisions, 0u);
+  // A collision supersedes both bodies' element predictions (actor-absent, §4.2); a body
+  // always has one (at least its next cell crossing or wall), so each collision counts two.
+  EXPECT_EQ(world.Stats().stale_actor_absent, 2 * world.Stats().collisions);
 }
 
 TEST(PolyhedraWorld, OpenSpaceConservesMomentumAndAngularMomentum) {
