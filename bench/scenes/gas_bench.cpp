@@ -21,16 +21,16 @@ double CollisionRate(double packing) {
   return 4 * n * g * std::sqrt(M_PI);
 }
 
-void BM_Gas(benchmark::State& state) {
-  const auto n = static_cast<std::uint32_t>(state.range(0));
-  const double packing = static_cast<double>(state.range(1)) / 100.0;
-  const auto broadphase = static_cast<Broadphase>(state.range(2));
+// Runs the gas of `n` bodies at `packing` and reports the counters below.
+void RunGas(benchmark::State& state, std::uint32_t n, double packing, Broadphase broadphase,
+            double cells_per_body) {
   const double per_particle = n >= 1000000 ? 4.0 : (n >= 100000 ? 10.0 : 20.0);
   scenes::GasOptions options;
   options.n = n;
   options.packing = packing;
   WorldSettings settings;
   settings.broadphase = broadphase;
+  settings.grid_cells_per_body = cells_per_body;
   double collisions = 0, events = 0, stale = 0, seconds = 0, cpu_seconds = 0, bytes = 0;
   double pair_tests = 0, simulated = 0;
   for (auto _ : state) {
@@ -73,6 +73,19 @@ void BM_Gas(benchmark::State& state) {
   state.counters["bytes/body"] = bytes;
 }
 
+void BM_Gas(benchmark::State& state) {
+  RunGas(state, static_cast<std::uint32_t>(state.range(0)),
+         static_cast<double>(state.range(1)) / 100.0, static_cast<Broadphase>(state.range(2)),
+         WorldSettings{}.grid_cells_per_body);
+}
+
+// The cell size choice: fewer cells mean fewer crossings but more pair tests per prediction.
+void BM_GasCells(benchmark::State& state) {
+  RunGas(state, static_cast<std::uint32_t>(state.range(0)),
+         static_cast<double>(state.range(1)) / 100.0, Broadphase::kGrid,
+         static_cast<double>(state.range(2)) / 10.0);
+}
+
 void GasArguments(benchmark::internal::Benchmark* b) {
   for (const int packing : {5, 10, 30}) {
     for (const int n : {1000, 10000, 100000, 1000000}) {
@@ -84,6 +97,10 @@ void GasArguments(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_Gas)->Apply(GasArguments)->ArgNames({"n", "packing%", "allpairs0_grid1"})
+    ->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_GasCells)
+    ->ArgsProduct({{10000, 100000}, {5, 30}, {5, 10, 20, 40, 80}})
+    ->ArgNames({"n", "packing%", "cells_per_body_x10"})
     ->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

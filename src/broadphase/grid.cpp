@@ -37,6 +37,7 @@ Grid::Grid(const Config& config, std::uint32_t element_capacity)
     : lo_(config.lo), length_(config.hi - config.lo), periodic_(config.periodic) {
   n_ = CellCounts(config);
   for (int k = 0; k < 3; ++k) size_[k] = length_[k] / n_[k];
+  stride_ = {1u, static_cast<std::uint32_t>(n_[0]), static_cast<std::uint32_t>(n_[0] * n_[1])};
   head_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2], kNoIndex);
   next_.assign(element_capacity, kNoIndex);
   prev_.assign(element_capacity, kNoIndex);

@@ -85,7 +85,8 @@ class Grid {
   template <typename Fn>
   void ForEachNeighbor(std::uint32_t e, Fn&& fn) const {
     const std::array<int, 3> c = Coordinates(cell_of_[e]);
-    Span x{}, y{}, z{};
+    Span x, y, z;  // Single() fills them from count 0; no need to zero the arrays
+    x.count = y.count = z.count = 0;
     Around(0, c[0], x);
     Around(1, c[1], y);
     Around(2, c[2], z);
@@ -97,8 +98,9 @@ class Grid {
   template <typename Fn>
   void ForEachNewNeighbor(std::uint32_t e, int axis, int direction, Fn&& fn) const {
     const std::array<int, 3> c = Coordinates(cell_of_[e]);
-    std::array<Span, 3> spans{};
+    std::array<Span, 3> spans;
     for (int k = 0; k < 3; ++k) {
+      spans[k].count = 0;
       if (k == axis) {
         Single(k, c[k] + direction, spans[k]);
       } else {
@@ -140,10 +142,6 @@ class Grid {
     std::array<double, 3> shift;
     int count;
   };
-  static std::uint32_t Stride(const std::array<int, 3>& n, int axis) {
-    return axis == 0 ? 1u : (axis == 1 ? static_cast<std::uint32_t>(n[0])
-                                       : static_cast<std::uint32_t>(n[0] * n[1]));
-  }
   void Single(int axis, int at, Span& span) const {
     double shift = 0.0;
     if (at < 0) {
@@ -155,7 +153,7 @@ class Grid {
       at -= n_[axis];
       shift = length_[axis];
     }
-    span.offset[span.count] = static_cast<std::uint32_t>(at) * Stride(n_, axis);
+    span.offset[span.count] = static_cast<std::uint32_t>(at) * stride_[axis];
     span.shift[span.count] = shift;
     ++span.count;
   }
@@ -183,6 +181,7 @@ class Grid {
   Vec3 length_ = Vec3::Ones();
   std::array<double, 3> size_{};
   std::array<int, 3> n_{1, 1, 1};
+  std::array<std::uint32_t, 3> stride_{1, 1, 1};  // cell index step per axis (hot in scans)
   bool periodic_ = false;
   std::vector<std::uint32_t> head_;     // first element of each cell
   std::vector<std::uint32_t> next_;     // intrusive doubly linked lists of each cell
