@@ -190,12 +190,12 @@ FeaturePair ColdStart(const TrackedPolyhedron& a, const TrackedPolyhedron& b,
   return {a.StartingFeature(toward_b), b.StartingFeature(toward_a)};
 }
 
-}  // namespace
-
-ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA,
-                                    const TrackedPolyhedron& b, const Pose& X_WB,
-                                    std::optional<FeaturePair> start,
-                                    const ClosestFeaturesOptions& options) {
+// FindClosestFeatures writing into `out` (every field is set on every path), so that the tracker
+// fills its cached answer in place instead of copying a fresh one over it at every update.
+void FindClosestFeaturesInto(const TrackedPolyhedron& a, const Pose& X_WA,
+                             const TrackedPolyhedron& b, const Pose& X_WB,
+                             std::optional<FeaturePair> start,
+                             const ClosestFeaturesOptions& options, ClosestFeatures& out) {
   const narrow::PairFrame frame(X_WA, X_WB);
   FeaturePair first;
   if (start) {
@@ -210,7 +210,6 @@ ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA
   const WalkEnd end = walk.Run(first);
 
   const Eigen::Matrix3d& R_WA = frame.R_WA;
-  ClosestFeatures out;
   out.steps = walk.steps();
   out.features = walk.pair();
   const FeatureClosest& closest = walk.closest();
@@ -227,13 +226,13 @@ ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA
     set_points(closest.p_a, closest.p_b,
                closest.distance > 0.0 ? Eigen::Vector3d(gap / closest.distance)
                                       : Eigen::Vector3d::UnitX());
-    return out;
+    return;
   }
   if (end == WalkEnd::kTerminal && closest.distance > walk.tolerance()) {
     out.status = ClosestFeatures::Status::kSeparated;
     out.distance = closest.distance;
     set_points(closest.p_a, closest.p_b, gap / closest.distance);
-    return out;
+    return;
   }
   // Contact, containment or a terminal pair within round-off of touching: the separating axis
   // test decides, and gives the depth of a penetration.
@@ -243,7 +242,7 @@ ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA
     out.status = ClosestFeatures::Status::kSeparated;
     out.distance = closest.distance;
     set_points(closest.p_a, closest.p_b, gap / closest.distance);
-    return out;
+    return;
   }
   // Touching counts as penetrating with depth 0 (a round-off positive separation of features
   // that meet is not a gap).
@@ -263,6 +262,16 @@ ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA
     out.features = witness_walk.pair();
     set_points(witness_walk.closest().p_a, witness_walk.closest().p_b - shift, axis.normal);
   }
+}
+
+}  // namespace
+
+ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA,
+                                    const TrackedPolyhedron& b, const Pose& X_WB,
+                                    std::optional<FeaturePair> start,
+                                    const ClosestFeaturesOptions& options) {
+  ClosestFeatures out;
+  FindClosestFeaturesInto(a, X_WA, b, X_WB, start, options, out);
   return out;
 }
 
@@ -273,7 +282,7 @@ ClosestFeatureTracker::ClosestFeatureTracker(const TrackedPolyhedron& a, const T
 const ClosestFeatures& ClosestFeatureTracker::Update(const Pose& X_WA, const Pose& X_WB) {
   std::optional<FeaturePair> start;
   if (has_last_) start = last_.features;
-  last_ = FindClosestFeatures(*a_, X_WA, *b_, X_WB, start, options_);
+  FindClosestFeaturesInto(*a_, X_WA, *b_, X_WB, start, options_, last_);
   has_last_ = true;
   ++calls_;
   steps_ += static_cast<std::uint64_t>(last_.steps);

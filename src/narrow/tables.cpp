@@ -25,16 +25,6 @@ TrackedPolyhedron::Tables::Tables(const ConvexPolyhedron& polyhedron)
   }
 }
 
-const narrow::FaceAngleTable* TrackedPolyhedron::Tables::face(int f) const {
-  const std::int32_t slot = face_slot_[static_cast<std::size_t>(f)];
-  return slot < 0 ? nullptr : &face_tables_[static_cast<std::size_t>(slot)];
-}
-
-const narrow::VertexAngleTable* TrackedPolyhedron::Tables::vertex(int v) const {
-  const std::int32_t slot = vertex_slot_[static_cast<std::size_t>(v)];
-  return slot < 0 ? nullptr : &vertex_tables_[static_cast<std::size_t>(slot)];
-}
-
 TrackedPolyhedron::TrackedPolyhedron(std::shared_ptr<const ConvexPolyhedron> polyhedron)
     : polyhedron_(std::move(polyhedron)) {
   SPARSEDYN_ASSERT(polyhedron_ != nullptr, "TrackedPolyhedron needs a polyhedron");

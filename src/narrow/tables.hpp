@@ -18,8 +18,15 @@ class TrackedPolyhedron::Tables {
 
   /// The J.1.1 table of face f / vertex v, or nullptr when it has too few edges (or, for a
   /// vertex, a cone too wide for a central projection).
-  const narrow::FaceAngleTable* face(int f) const;
-  const narrow::VertexAngleTable* vertex(int v) const;
+  /// Inline: the walk asks for them at every zone test.
+  const narrow::FaceAngleTable* face(int f) const {
+    const std::int32_t slot = face_slot_[static_cast<std::size_t>(f)];
+    return slot < 0 ? nullptr : &face_tables_[static_cast<std::size_t>(slot)];
+  }
+  const narrow::VertexAngleTable* vertex(int v) const {
+    const std::int32_t slot = vertex_slot_[static_cast<std::size_t>(v)];
+    return slot < 0 ? nullptr : &vertex_tables_[static_cast<std::size_t>(slot)];
+  }
   const narrow::DirectionTable& directions() const { return directions_; }
 
   int face_table_count() const { return static_cast<int>(face_tables_.size()); }

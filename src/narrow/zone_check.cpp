@@ -60,13 +60,12 @@ Moves EdgeMoves(const ConvexPolyhedron& polyhedron, int e, const Eigen::Vector3d
     return moves;
   }
   const double f0 = planes[2].plane.SignedDistance(q), f1 = planes[3].plane.SignedDistance(q);
-  const std::size_t first = f1 < f0 ? 3 : 2, second = first == 2 ? 3 : 2;
-  if (planes[first].plane.SignedDistance(q) < 0.0) {
-    moves.Add({planes[first].neighbor, Move::Kind::kHigher});
-  }
-  if (planes[second].plane.SignedDistance(q) < 0.0) {
-    moves.Add({planes[second].neighbor, Move::Kind::kHigher});
-  }
+  // The distances just computed decide (no second evaluation of the same planes).
+  const bool f1_first = f1 < f0;
+  const double d_first = f1_first ? f1 : f0, d_second = f1_first ? f0 : f1;
+  const std::size_t first = f1_first ? 3 : 2, second = f1_first ? 2 : 3;
+  if (d_first < 0.0) moves.Add({planes[first].neighbor, Move::Kind::kHigher});
+  if (d_second < 0.0) moves.Add({planes[second].neighbor, Move::Kind::kHigher});
   return moves;
 }
 

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "narrow/angle_tables.hpp"
 #include "narrow/feature_distance.hpp"
@@ -202,6 +204,37 @@ TEST(ClosestFeatureTracker, FollowsARotatingPairWithFewStepsAndNoCapFailures) {
   EXPECT_EQ(tracker.iteration_cap_failures(), 0u);
   // Coherence: 1 degree per call needs about one step on average.
   EXPECT_LT(static_cast<double>(tracker.steps()) / static_cast<double>(tracker.calls()), 3.0);
+}
+
+// The tracker fills its cached answer in place: every field must come from the new query, also
+// when a penetrating answer (depth, axis features) is followed by a separated one and back.
+TEST(ClosestFeatureTracker, InPlaceAnswerEqualsAFreshQueryFromTheSameStart) {
+  const Shape hull = MakeShape("random hull F=60", *RandomConvexPolyhedron(60, 7));
+  ClosestFeatureTracker tracker(*hull.tracked, *Cube().tracked);
+  const Eigen::Vector3d axis = Eigen::Vector3d(0.7, -0.2, 0.5).normalized();
+  std::optional<FeaturePair> start;
+  int penetrating = 0;
+  for (int step = 0; step < 240; ++step) {
+    // B moves into A and out again every 40 steps while it spins.
+    const double x = 2.2 + std::sin(step * M_PI / 20);
+    const Pose X_WA = At(0, 0, 0);
+    const Pose X_WB = At(x, 0.2, -0.1, Eigen::Quaterniond(Eigen::AngleAxisd(step * 0.05, axis)));
+    const ClosestFeatures fresh =
+        FindClosestFeatures(*hull.tracked, X_WA, *Cube().tracked, X_WB, start);
+    const ClosestFeatures& tracked = tracker.Update(X_WA, X_WB);
+    SCOPED_TRACE("step " + std::to_string(step));
+    ASSERT_EQ(tracked.status, fresh.status);
+    ASSERT_EQ(tracked.distance, fresh.distance);
+    ASSERT_EQ(tracked.point_a, fresh.point_a);
+    ASSERT_EQ(tracked.point_b, fresh.point_b);
+    ASSERT_EQ(tracked.normal, fresh.normal);
+    ASSERT_EQ(tracked.features, fresh.features);
+    ASSERT_EQ(tracked.steps, fresh.steps);
+    start = tracked.features;
+    penetrating += tracked.status == ClosestFeatures::Status::kPenetrating ? 1 : 0;
+  }
+  EXPECT_GT(penetrating, 0);
+  EXPECT_LT(penetrating, 240);
 }
 
 TEST(ClosestFeatures, IterationCapIsReportedAsAFailureStatus) {
