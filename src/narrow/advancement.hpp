@@ -65,30 +65,4 @@ inline double SpinRadius(const ConvexPolyhedron& poly, const RigidPath& path) {
   return std::sqrt(r2);
 }
 
-/// A bound rate(dt) <= now + growth * dt on (w x r) . d, the speed along d that a body's spin w
-/// gives its points r (offsets from the path's centre), for all dt >= 0 from the pose X:
-/// (w x r) . d = r . u with u = d x w normal to w; after turning by theta = |w| dt,
-/// r(dt) . u = cos(theta) r . u - sin(theta) r . (w^ x u) <= max(h(u), 0) + theta |u| r_s, where
-/// h is the support function at X and r_s the SpinRadius (for theta >= pi/2 the right side
-/// already exceeds the plain bound |u| r_s). Near contact h(u) is often well below |u| r_s.
-struct SpinRate {
-  double now = 0.0;
-  double growth = 0.0;
-};
-/// `support(u_B)` returns the support vertex index of `poly` in body-frame direction u_B.
-template <typename Support>
-SpinRate SpinRateAlong(const ConvexPolyhedron& poly, const Pose& X, const Vec3& omega,
-                       const Vec3& d, double spin_radius, const Support& support) {
-  const Vec3 u = d.cross(omega);
-  if (u.squaredNorm() == 0.0) return {};
-  const Vec3 u_B = X.rotation.normalized().conjugate() * u;
-  const double h = u_B.dot(poly.vertex(support(u_B)));
-  return {std::max(h, 0.0), omega.norm() * u.norm() * spin_radius};
-}
-inline SpinRate SpinRateAlong(const ConvexPolyhedron& poly, const Pose& X, const Vec3& omega,
-                              const Vec3& d, double spin_radius) {
-  return SpinRateAlong(poly, X, omega, d, spin_radius,
-                       [&poly](const Vec3& u_B) { return poly.SupportVertex(u_B); });
-}
-
 }  // namespace sparsedyn::narrow
