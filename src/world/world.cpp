@@ -3,7 +3,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "narrow/advancement.hpp"
 #include "world/world_impl.hpp"
 
 #include "world/overlap_index.hpp"
@@ -221,8 +220,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
     shape_.push_back(shape);
     q0_.push_back(def.orientation.normalized());
     omega_.push_back(def.angular_velocity);
-    spin_radius_.push_back(narrow::SpinRadius(
-        *shapes_[shape].polyhedron, RigidPath{Path{}, q0_.back(), def.angular_velocity}));
+    spin_radius_.push_back(SpinRadiusOf(static_cast<std::uint32_t>(index)));
   }
   if (!def.envelope.IsZero() && !has_envelopes_) {
     has_envelopes_ = true;

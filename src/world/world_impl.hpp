@@ -99,6 +99,8 @@ class World::Impl {
     return RigidPath{PathOf(i), q0_[i], omega_[i]};
   }
   const Shape& ShapeOf(std::uint32_t i) const { return shapes_[shape_[i]]; }
+  /// narrow::SpinRadius of body i's current segment (kept in spin_radius_ when its spin changes).
+  double SpinRadiusOf(std::uint32_t i) const;
   /// Inverse inertia in the world frame at orientation q.
   Eigen::Matrix3d InvInertiaWorld(std::uint32_t i, const Eigen::Quaterniond& q) const {
     const Eigen::Matrix3d r = q.toRotationMatrix();

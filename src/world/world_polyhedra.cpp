@@ -81,6 +81,10 @@ std::optional<std::uint32_t> World::Impl::FindPolyhedronOverlap(const BodyDef& d
   return found;
 }
 
+double World::Impl::SpinRadiusOf(std::uint32_t i) const {
+  return narrow::SpinRadius(*ShapeOf(i).polyhedron, RigidPathOf(i));
+}
+
 Vec3 World::Impl::PairShift(std::uint32_t a, std::uint32_t b) const {
   const Vec3 d = PathOf(b).PositionAt(now_) - PathOf(a).PositionAt(now_);
   return MinimumImage(d) - d;
@@ -221,7 +225,7 @@ void World::Impl::SetMotion(std::uint32_t i, const Vec3& v, const Vec3& omega) {
   const RigidPath path = RigidPathOf(i);
   q0_[i] = path.OrientationAt(now_).normalized();
   omega_[i] = omega;
-  spin_radius_[i] = narrow::SpinRadius(*ShapeOf(i).polyhedron, RigidPathOf(i));
+  spin_radius_[i] = SpinRadiusOf(i);
   starts_[i] = PathStart{path.centre.PositionAt(now_), v, now_};
   ++version_[i];
   if (on_segment_) {
