@@ -32,7 +32,8 @@ void World::Impl::MaybeReorder() {
 }
 
 void World::Impl::Reorder() {
-  SPARSEDYN_ASSERT(grid_.has_value(), "Reorder: only worlds on the grid are renumbered");
+  SPARSEDYN_ASSERT(grid_ && !has_envelopes_,
+                   "Reorder: only worlds on the grid (never built with envelopes) are renumbered");
   const auto n = static_cast<std::uint32_t>(starts_.size());
   std::vector<std::uint64_t> key(n);
   for (std::uint32_t i = 0; i < n; ++i) key[i] = grid_->MortonKey(grid_->CellOf(i));
@@ -51,7 +52,6 @@ void World::Impl::Reorder() {
   PermuteVector(starts_, old_of_new);
   if (own_accelerations_) PermuteVector(acceleration_, old_of_new);
   PermuteVector(material_, old_of_new);
-  if (!envelope_.empty()) PermuteVector(envelope_, old_of_new);
   if (polyhedra_) {
     PermuteVector(shape_, old_of_new);
     PermuteVector(q0_, old_of_new);
