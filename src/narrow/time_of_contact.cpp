@@ -51,9 +51,10 @@ std::optional<double> PairAdvancement(const TrackedPolyhedron& a, const RigidPat
   const std::optional<double> lipschitz = narrow::AdvancementStep(
       cf.distance - target, dv.norm() + path_a.omega.norm() * r_a + path_b.omega.norm() * r_b,
       da.norm(), horizon);
+  if (!lipschitz) return lipschitz;
   narrow::SlabBound bound(a, path_a, r_a, b, path_b, r_b, n, t, cf.features);
   const double slab = bound.Separation() - target;
-  if (!lipschitz || slab <= 0.0) return lipschitz;
+  if (slab <= 0.0) return lipschitz;
   const std::optional<double> plain = narrow::AdvancementStep(
       slab, dv.dot(n) + n.cross(path_a.omega).norm() * r_a + n.cross(path_b.omega).norm() * r_b,
       da.dot(n), horizon);
