@@ -76,17 +76,19 @@ grep -E '^(fit|law)' "$fits" || true
 
 # Plots: gnuplot reads the CSVs by column name.
 plot() { gnuplot -e "set datafile separator ','" - 2>&1 >/dev/null; }
-plot <<EOF
-set terminal pngcairo size 1300,520 font "Sans,11"
-set output "$out/thesis_7_0_time_vs_n.png"
-set multiplot layout 1,2 title "Thesis §7.0 on the thesis scene (D = 0.05, seed 1): CPU time per simulated second, conventional method at equal accuracy"
-set logscale xy
+# The log-log axes against N that the §7.0 and §7.1 plots share.
+n_axes='set logscale xy
 set autoscale xfix
 set offsets graph 0.04, graph 0.04, 0, 0
 set xtics (125, 250, 500, 1000, 2000, 4000, 8000, 16000, 32000, 64000) rotate by -30
 set grid xtics ytics mytics lc rgb "#dddddd"
 set key top left box opaque
-set xlabel "N (bodies)"
+set xlabel "N (bodies)"'
+plot <<EOF
+set terminal pngcairo size 1300,520 font "Sans,11"
+set output "$out/thesis_7_0_time_vs_n.png"
+set multiplot layout 1,2 title "Thesis §7.0 on the thesis scene (D = 0.05, seed 1): CPU time per simulated second, conventional method at equal accuracy"
+$n_axes
 set ylabel "CPU s per simulated s"
 set format y "10^{%L}"
 set key top left box opaque
@@ -113,13 +115,7 @@ plot <<EOF
 set terminal pngcairo size 1400,560 font "Sans,11"
 set output "$out/thesis_7_1_breakdown.png"
 set multiplot layout 1,2 title "Thesis §7.1: sparsedyn's cost by phase (D = 0.05; WorldSettings::profile_phases; least of three runs)" noenhanced
-set logscale xy
-set autoscale xfix
-set offsets graph 0.04, graph 0.04, 0, 0
-set xtics (125, 250, 500, 1000, 2000, 4000, 8000, 16000, 32000, 64000) rotate by -30
-set grid xtics ytics mytics lc rgb "#dddddd"
-set key top left box opaque
-set xlabel "N (bodies)"
+$n_axes
 set title "cumulative"
 set ylabel "CPU s per simulated s"
 set format y "10^{%L}"
