@@ -81,17 +81,13 @@ int ConvexPolyhedron::OtherVertex(int e, int v) const {
 }
 
 std::span<const VoronoiPlane> ConvexPolyhedron::VoronoiPlanes(FeatureId feature) const {
-  const std::span<const VoronoiPlane> all(voronoi_planes_);
-  const auto i = Index(feature.index);
   switch (feature.type) {
     case FeatureType::kVertex:
-      return all.subspan(Index(vertex_plane_first_[i]),
-                         Index(vertex_plane_first_[i + 1] - vertex_plane_first_[i]));
+      return VertexPlanes(feature.index);
     case FeatureType::kEdge:
-      return all.subspan(Index(edge_plane_first_ + 4 * feature.index), 4);
+      return EdgePlanes(feature.index);
     case FeatureType::kFace:
-      return all.subspan(Index(face_plane_first_[i]),
-                         Index(face_plane_first_[i + 1] - face_plane_first_[i]));
+      return FacePlanes(feature.index);
     case FeatureType::kNone:
       break;
   }

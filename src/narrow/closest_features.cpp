@@ -27,7 +27,7 @@ constexpr double kRoundOff = 64.0 * std::numeric_limits<double>::epsilon();
 
 enum class WalkEnd : std::uint8_t {
   kTerminal,   // no zone plane violated: the pair is closest (or touching, if distance ~ 0)
-  kContact,    // the current features meet (distance exactly 0)
+  kContact,    // the current features meet (distance 0, or within round-off at a local minimum)
   kContained,  // a closest point lies inside the other polyhedron
   kCap,        // options.max_steps reached
 };
@@ -58,6 +58,7 @@ class Walk {
       Outcome outcome = StepOnA();
       if (outcome == Outcome::kNone) outcome = StepOnB();
       if (outcome == Outcome::kContained) return WalkEnd::kContained;
+      if (outcome == Outcome::kTouching) return WalkEnd::kContact;
       if (outcome == Outcome::kNone) return WalkEnd::kTerminal;
       ++steps_;
     }
@@ -68,7 +69,7 @@ class Walk {
   int steps() const { return steps_; }
 
  private:
-  enum class Outcome : std::uint8_t { kNone, kMoved, kContained };
+  enum class Outcome : std::uint8_t { kNone, kMoved, kContained, kTouching };
 
   FeatureClosest Closest(FeatureId fa, FeatureId fb) const {
     return narrow::ClosestPointsOfFeatures(a_, tables_a_, fa, b_, tables_b_, fb, frame_);
@@ -108,11 +109,15 @@ class Walk {
   }
 
   Outcome StepOnA() {
+    if (narrow::InZone(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a)) {
+      return Outcome::kNone;
+    }
     const narrow::Moves moves =
         narrow::ZoneMoves(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a);
     for (int i = 0; i < moves.count; ++i) {
       const Move& move = moves.list[static_cast<std::size_t>(i)];
       if (move.kind == Move::Kind::kBehindFace) {
+        if (closest_.distance <= tolerance_) return Outcome::kTouching;
         const std::optional<int> face = FaceInFrontOf(a_, closest_.p_b);
         if (!face) return Outcome::kContained;
         Escape({FeatureId::Face(*face), pair_.b});
@@ -129,10 +134,12 @@ class Walk {
 
   Outcome StepOnB() {
     const Eigen::Vector3d q = frame_.ToB(closest_.p_a);
+    if (narrow::InZone(b_, tables_b_, pair_.b, q, closest_.slot_b)) return Outcome::kNone;
     const narrow::Moves moves = narrow::ZoneMoves(b_, tables_b_, pair_.b, q, closest_.slot_b);
     for (int i = 0; i < moves.count; ++i) {
       const Move& move = moves.list[static_cast<std::size_t>(i)];
       if (move.kind == Move::Kind::kBehindFace) {
+        if (closest_.distance <= tolerance_) return Outcome::kTouching;
         const std::optional<int> face = FaceInFrontOf(b_, q);
         if (!face) return Outcome::kContained;
         Escape({pair_.a, FeatureId::Face(*face)});
@@ -148,6 +155,9 @@ class Walk {
   }
 
   // Leaving a local minimum may raise the distance: the potential starts afresh from there.
+  // Never within round-off of touching (the callers' kTouching): there a point "behind" a face
+  // is touching it, and escapes that restart the potential can cycle (seen on a random hull
+  // touching a tetrahedron: face -> escape -> edge -> face ... at distances of 1e-16).
   void Escape(FeaturePair pair) {
     pair_ = pair;
     closest_ = Closest(pair.a, pair.b);

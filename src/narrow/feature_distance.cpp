@@ -96,7 +96,7 @@ SegmentClosest ClosestSegmentSegment(const Eigen::Vector3d& p0, const Eigen::Vec
 
 bool IsOverFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable* table,
                 const Eigen::Vector3d& q) {
-  const auto planes = polyhedron.VoronoiPlanes(FeatureId::Face(f));
+  const auto planes = polyhedron.FacePlanes(f);
   if (table != nullptr) {
     return planes[static_cast<std::size_t>(table->DecidingPlane(q))].plane.SignedDistance(q) >= 0.0;
   }

@@ -40,4 +40,9 @@ struct Moves {
 Moves ZoneMoves(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
                 FeatureId f, const Eigen::Vector3d& q, int own_slot);
 
+/// Whether ZoneMoves(polyhedron, tables, f, q, own_slot) is empty, without building the moves:
+/// the test of almost every warm-started update, whose closest pair has not changed.
+bool InZone(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
+            FeatureId f, const Eigen::Vector3d& q, int own_slot);
+
 }  // namespace sparsedyn::narrow

@@ -9,7 +9,9 @@
 
 #include "narrow/angle_tables.hpp"
 #include "narrow/feature_distance.hpp"
+#include "narrow/pair_frame.hpp"
 #include "narrow/tables.hpp"
+#include "narrow/zone_check.hpp"
 #include "oracle_check.hpp"
 
 namespace sparsedyn {
@@ -136,6 +138,60 @@ TEST(ClosestFeatures, AngleTablesDecideLikeTheirPlanes) {
     }
   }
   EXPECT_GT(tested, 2000);
+}
+
+TEST(PairFrame, RotationOfAnyNormIsTheNormalisedQuaternionsRotation) {
+  testing::PairGenerator generator(13);
+  int exact = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Eigen::Vector3d v = generator.RandomUnit();
+    Eigen::Quaterniond q(generator.Uniform() - 0.5, v.x(), v.y(), v.z());
+    const Eigen::Matrix3d reference = q.normalized().toRotationMatrix();
+    q.coeffs() *= std::pow(10.0, 6.0 * generator.Uniform() - 3.0);
+    EXPECT_LT((narrow::PairFrame::RotationOf(q) - reference).cwiseAbs().maxCoeff(), 4e-15);
+    const Eigen::Quaterniond unit = q.normalized();
+    if (unit.squaredNorm() == 1.0) {
+      EXPECT_EQ(narrow::PairFrame::RotationOf(unit), unit.toRotationMatrix());
+      ++exact;
+    }
+  }
+  EXPECT_GT(exact, 100);
+}
+
+TEST(ClosestFeatures, InZoneIsTrueExactlyWhenZoneMovesIsEmpty) {
+  // The walk's fast test against the moves it stands for, on every feature of the generic
+  // shapes, with and without tables, for random points and for points put on a zone plane (the
+  // tie rule: on a plane is inside).
+  testing::PairGenerator generator(12);
+  int tested = 0, inside = 0;
+  for (const Shape& shape : generator.generic_shapes()) {
+    const ConvexPolyhedron& p = *shape.polyhedron;
+    const TrackedPolyhedron::Tables* tables = &shape.tracked->tables();
+    auto check = [&](FeatureId f) {
+      const auto planes = p.VoronoiPlanes(f);
+      for (int i = 0; i < 40; ++i) {
+        Eigen::Vector3d q = 2.0 * p.bounding_radius() * generator.RandomUnit() * generator.Uniform();
+        if (i % 4 == 0) {  // onto a zone plane
+          const Plane& plane = planes[static_cast<std::size_t>(i / 4) % planes.size()].plane;
+          q -= plane.SignedDistance(q) * plane.normal;
+        }
+        for (const TrackedPolyhedron::Tables* t : {tables, static_cast<decltype(tables)>(nullptr)}) {
+          for (const int slot : {-1, 0}) {
+            const bool empty = narrow::ZoneMoves(p, t, f, q, slot).count == 0;
+            EXPECT_EQ(narrow::InZone(p, t, f, q, slot), empty)
+                << shape.name << " feature " << static_cast<int>(f.type) << ":" << f.index;
+            inside += empty ? 1 : 0;
+            ++tested;
+          }
+        }
+      }
+    };
+    for (int v = 0; v < p.vertex_count(); ++v) check(FeatureId::Vertex(v));
+    for (int e = 0; e < p.edge_count(); ++e) check(FeatureId::Edge(e));
+    for (int f = 0; f < p.face_count(); ++f) check(FeatureId::Face(f));
+  }
+  EXPECT_GT(tested, 10000);
+  EXPECT_GT(inside, tested / 50);  // both answers occur
 }
 
 TEST(ClosestFeatures, AngleAndDirectionTablesGiveThePlainWalksAnswers) {

@@ -185,6 +185,16 @@ class ConvexPolyhedron {
   ///   (normal pointing into the face; neighbour: that edge).
   /// Planes shared by two regions appear in both with opposite normals.
   std::span<const VoronoiPlane> VoronoiPlanes(FeatureId feature) const;
+  /// VoronoiPlanes of vertex v, edge e or face f: inline, for the walk's inner loop.
+  std::span<const VoronoiPlane> VertexPlanes(int v) const {
+    return PlanesFrom(vertex_plane_first_[Index(v)], vertex_plane_first_[Index(v) + 1]);
+  }
+  std::span<const VoronoiPlane> EdgePlanes(int e) const {
+    return PlanesFrom(edge_plane_first_ + 4 * e, edge_plane_first_ + 4 * e + 4);
+  }
+  std::span<const VoronoiPlane> FacePlanes(int f) const {
+    return PlanesFrom(face_plane_first_[Index(f)], face_plane_first_[Index(f) + 1]);
+  }
   /// @}
 
   /// @name Geometry and mass properties (uniform density 1; scale by the density)
@@ -235,6 +245,9 @@ class ConvexPolyhedron {
   ConvexPolyhedron() = default;
 
   static std::size_t Index(int i) { return static_cast<std::size_t>(i); }
+  std::span<const VoronoiPlane> PlanesFrom(std::int32_t first, std::int32_t end) const {
+    return {voronoi_planes_.data() + first, Index(end - first)};
+  }
   // Fills planes, Voronoi regions and mass properties from vertices_ and the topology.
   void ComputeDerivedData();
 
