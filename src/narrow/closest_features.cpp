@@ -229,6 +229,14 @@ void FindClosestFeaturesInto(const TrackedPolyhedron& a, const Pose& X_WA,
     out.point_b = R_WA * p_b + X_WA.translation;
     out.normal = R_WA * normal_A;
   };
+  // The separated answer, the common one: B's witness is A's plus the gap, and the normal the
+  // gap over the distance (two rotations and one division instead of three and three).
+  auto set_separated = [&] {
+    out.point_a = R_WA * closest.p_a + X_WA.translation;
+    const Eigen::Vector3d gap_W = R_WA * (closest.p_b - closest.p_a);
+    out.point_b = out.point_a + gap_W;
+    out.normal = gap_W * (1.0 / closest.distance);
+  };
   const Eigen::Vector3d gap = closest.p_b - closest.p_a;
   if (end == WalkEnd::kCap) {
     out.status = ClosestFeatures::Status::kIterationCap;
@@ -241,7 +249,7 @@ void FindClosestFeaturesInto(const TrackedPolyhedron& a, const Pose& X_WA,
   if (end == WalkEnd::kTerminal && closest.distance > walk.tolerance()) {
     out.status = ClosestFeatures::Status::kSeparated;
     out.distance = closest.distance;
-    set_points(closest.p_a, closest.p_b, gap / closest.distance);
+    set_separated();
     return;
   }
   // Contact, containment or a terminal pair within round-off of touching: the separating axis
@@ -251,7 +259,7 @@ void FindClosestFeaturesInto(const TrackedPolyhedron& a, const Pose& X_WA,
   if (end == WalkEnd::kTerminal && axis.separation > 0.0) {
     out.status = ClosestFeatures::Status::kSeparated;
     out.distance = closest.distance;
-    set_points(closest.p_a, closest.p_b, gap / closest.distance);
+    set_separated();
     return;
   }
   // Touching counts as penetrating with depth 0 (a round-off positive separation of features

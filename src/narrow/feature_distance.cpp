@@ -106,11 +106,11 @@ bool IsOverFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable*
   return true;
 }
 
-FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable* table,
-                             const Eigen::Vector3d& q) {
-  const Plane& plane = polyhedron.face(f).plane;
-  if (IsOverFace(polyhedron, f, table, q)) return {q - plane.SignedDistance(q) * plane.normal, -1};
-  // Outside the prism: the closest point is on the boundary; O(n), only while the walk moves.
+namespace {
+
+// The closest point of face f's boundary to q, for q outside the face's prism; O(n), only while
+// the walk moves.
+FacePoint ClosestBoundaryPoint(const ConvexPolyhedron& polyhedron, int f, const Eigen::Vector3d& q) {
   const auto loop = polyhedron.FaceVertices(f);
   FacePoint best{polyhedron.vertex(loop[0]), 0};
   double best_distance = std::numeric_limits<double>::infinity();
@@ -125,6 +125,21 @@ FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f, const Fa
     }
   }
   return best;
+}
+
+// The closest point of face f's polygon to q, given whether q is over the face.
+FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f, const Eigen::Vector3d& q,
+                             bool over) {
+  if (!over) return ClosestBoundaryPoint(polyhedron, f, q);
+  const Plane& plane = polyhedron.face(f).plane;
+  return {q - plane.SignedDistance(q) * plane.normal, -1};
+}
+
+}  // namespace
+
+FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable* table,
+                             const Eigen::Vector3d& q) {
+  return ClosestPointOnFace(polyhedron, f, q, IsOverFace(polyhedron, f, table, q));
 }
 
 SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
@@ -142,6 +157,15 @@ SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
     const Eigen::Vector3d crossing = s0 + s * (s1 - s0);
     if (IsOverFace(polyhedron, f, table, crossing)) return {s, crossing, crossing, -1};
   }
+  // Both ends over the polygon and on one side of its plane: the whole segment is over it
+  // (the prism is convex) and its height is linear along it, so the lower end is closest; no
+  // boundary edge can be closer (its points are at least that high above the segment).
+  const bool over0 = IsOverFace(polyhedron, f, table, s0);
+  const bool over1 = IsOverFace(polyhedron, f, table, s1);
+  if (over0 && over1) {
+    if (std::abs(d1) < std::abs(d0)) return {1.0, s1, s1 - d1 * plane.normal, -1};
+    return {0.0, s0, s0 - d0 * plane.normal, -1};
+  }
   // Otherwise an endpoint against the polygon, or the segment against a boundary edge.
   SegmentFaceClosest best;
   double best_distance = std::numeric_limits<double>::infinity();
@@ -152,9 +176,9 @@ SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
       best = candidate;
     }
   };
-  const FacePoint at0 = ClosestPointOnFace(polyhedron, f, table, s0);
+  const FacePoint at0 = ClosestPointOnFace(polyhedron, f, s0, over0);
   offer({0.0, s0, at0.point, at0.edge_slot});
-  const FacePoint at1 = ClosestPointOnFace(polyhedron, f, table, s1);
+  const FacePoint at1 = ClosestPointOnFace(polyhedron, f, s1, over1);
   offer({1.0, s1, at1.point, at1.edge_slot});
   const auto loop = polyhedron.FaceVertices(f);
   for (std::size_t k = 0; k < loop.size(); ++k) {
@@ -172,7 +196,24 @@ FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
                                        const PairFrame& frame) {
   const bool face_a = fa.type == FeatureType::kFace, face_b = fb.type == FeatureType::kFace;
   FeatureClosest out;
-  if (!face_a && !face_b) {
+  const bool vertex_a = fa.type == FeatureType::kVertex, vertex_b = fb.type == FeatureType::kVertex;
+  if (vertex_a && (vertex_b || face_b)) {
+    // A vertex of A against a vertex or a face of B: one point to transform.
+    out.p_a = a.vertex(fa.index);
+    if (vertex_b) {
+      out.p_b = frame.ToA(b.vertex(fb.index));
+    } else {
+      const FacePoint c =
+          ClosestPointOnFace(b, fb.index, FaceTable(tables_b, fb.index), frame.ToB(out.p_a));
+      out.p_b = frame.ToA(c.point);
+      out.slot_b = c.edge_slot;
+    }
+  } else if (vertex_b && !face_a) {
+    // A's edge against B's vertex (the vertex-vertex case is above).
+    const auto ea = Ends(a, fa);
+    out.p_b = frame.ToA(b.vertex(fb.index));
+    out.p_a = ea[0] + ClosestParameterOnSegment(ea[0], ea[1], out.p_b) * (ea[1] - ea[0]);
+  } else if (!face_a && !face_b) {
     // Points and segments: in A's frame.
     const auto ea = Ends(a, fa), eb = Ends(b, fb);
     const SegmentClosest c =

@@ -33,10 +33,16 @@ struct PairFrame {
     const double wx = sx * w, wy = sy * w, wz = sz * w;
     const double xx = sx * x, xy = sy * x, xz = sz * x;
     const double yy = sy * y, yz = sz * y, zz = sz * z;
-    Eigen::Matrix3d r;
-    r << 1.0 - (yy + zz), xy - wz, xz + wy,  //
-        xy + wz, 1.0 - (xx + zz), yz - wx,   //
-        xz - wy, yz + wx, 1.0 - (xx + yy);
+    Eigen::Matrix3d r;  // element by element: Eigen's comma initializer costs ~25 instructions
+    r(0, 0) = 1.0 - (yy + zz);
+    r(0, 1) = xy - wz;
+    r(0, 2) = xz + wy;
+    r(1, 0) = xy + wz;
+    r(1, 1) = 1.0 - (xx + zz);
+    r(1, 2) = yz - wx;
+    r(2, 0) = xz - wy;
+    r(2, 1) = yz + wx;
+    r(2, 2) = 1.0 - (xx + yy);
     return r;
   }
 
