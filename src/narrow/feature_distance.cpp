@@ -94,23 +94,12 @@ SegmentClosest ClosestSegmentSegment(const Eigen::Vector3d& p0, const Eigen::Vec
   return out;
 }
 
-bool IsOverFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable* table,
-                const Eigen::Vector3d& q) {
-  const auto planes = polyhedron.FacePlanes(f);
-  if (table != nullptr) {
-    return planes[static_cast<std::size_t>(table->DecidingPlane(q))].plane.SignedDistance(q) >= 0.0;
-  }
-  for (std::size_t i = 1; i < planes.size(); ++i) {
-    if (planes[i].plane.SignedDistance(q) < 0.0) return false;
-  }
-  return true;
-}
-
 namespace {
 
 // The closest point of face f's boundary to q, for q outside the face's prism; O(n), only while
 // the walk moves.
-FacePoint ClosestBoundaryPoint(const ConvexPolyhedron& polyhedron, int f, const Eigen::Vector3d& q) {
+FacePoint ClosestBoundaryPoint(const ConvexPolyhedron& polyhedron, int f,
+                               const Eigen::Vector3d& q) {
   const auto loop = polyhedron.FaceVertices(f);
   FacePoint best{polyhedron.vertex(loop[0]), 0};
   double best_distance = std::numeric_limits<double>::infinity();
@@ -127,19 +116,13 @@ FacePoint ClosestBoundaryPoint(const ConvexPolyhedron& polyhedron, int f, const 
   return best;
 }
 
-// The closest point of face f's polygon to q, given whether q is over the face.
-FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f, const Eigen::Vector3d& q,
-                             bool over) {
-  if (!over) return ClosestBoundaryPoint(polyhedron, f, q);
-  const Plane& plane = polyhedron.face(f).plane;
-  return {q - plane.SignedDistance(q) * plane.normal, -1};
-}
-
 }  // namespace
 
 FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable* table,
                              const Eigen::Vector3d& q) {
-  return ClosestPointOnFace(polyhedron, f, q, IsOverFace(polyhedron, f, table, q));
+  if (!IsOverFace(polyhedron, f, table, q)) return ClosestBoundaryPoint(polyhedron, f, q);
+  const Plane& plane = polyhedron.face(f).plane;
+  return {q - plane.SignedDistance(q) * plane.normal, -1};
 }
 
 SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
@@ -176,10 +159,11 @@ SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
       best = candidate;
     }
   };
-  const FacePoint at0 = ClosestPointOnFace(polyhedron, f, s0, over0);
-  offer({0.0, s0, at0.point, at0.edge_slot});
-  const FacePoint at1 = ClosestPointOnFace(polyhedron, f, s1, over1);
-  offer({1.0, s1, at1.point, at1.edge_slot});
+  // An end over the polygon is closest to its projection; an end outside is closest to a point
+  // of the boundary, which the boundary edges below already cover.
+  const Eigen::Vector3d& normal = plane.normal;
+  if (over0) offer({0.0, s0, s0 - d0 * normal, -1});
+  if (over1) offer({1.0, s1, s1 - d1 * normal, -1});
   const auto loop = polyhedron.FaceVertices(f);
   for (std::size_t k = 0; k < loop.size(); ++k) {
     const SegmentClosest c = ClosestSegmentSegment(s0, s1, polyhedron.vertex(loop[k]),

@@ -25,8 +25,18 @@ SegmentClosest ClosestSegmentSegment(const Eigen::Vector3d& p0, const Eigen::Vec
 
 /// Whether q lies over face f (in the prism its side planes bound; on a side plane counts as
 /// over): the J.1.1 table decides with one plane when given, else all side planes are tested.
-bool IsOverFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable* table,
-                const Eigen::Vector3d& q);
+/// Inline: the zone test of a face runs at every update whose closest feature is a face.
+inline bool IsOverFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable* table,
+                       const Eigen::Vector3d& q) {
+  const auto planes = polyhedron.FacePlanes(f);
+  if (table != nullptr) {
+    return planes[static_cast<std::size_t>(table->DecidingPlane(q))].plane.SignedDistance(q) >= 0.0;
+  }
+  for (std::size_t i = 1; i < planes.size(); ++i) {
+    if (planes[i].plane.SignedDistance(q) < 0.0) return false;
+  }
+  return true;
+}
 
 /// Closest point of face f's polygon to q (polyhedron frame). edge_slot is the position in
 /// FaceEdges(f) of the boundary edge the point lies on, or -1 when it is inside the polygon.

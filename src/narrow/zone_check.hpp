@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <array>
 
+#include "narrow/angle_tables.hpp"
+#include "narrow/feature_distance.hpp"
 #include "narrow/tables.hpp"
 #include "sparsedyn/geometry/convex_polyhedron.hpp"
 
@@ -40,9 +42,56 @@ struct Moves {
 Moves ZoneMoves(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
                 FeatureId f, const Eigen::Vector3d& q, int own_slot);
 
+namespace zone_detail {
+inline bool InVertexZone(const ConvexPolyhedron& polyhedron,
+                         const TrackedPolyhedron::Tables* tables, int v, const Eigen::Vector3d& q) {
+  const auto planes = polyhedron.VertexPlanes(v);
+  const VertexAngleTable* table = tables == nullptr ? nullptr : tables->vertex(v);
+  if (table != nullptr) {
+    const std::int32_t deciding = table->DecidingPlane(q - polyhedron.vertex(v));
+    if (deciding >= 0) {
+      return !(planes[static_cast<std::size_t>(deciding)].plane.SignedDistance(q) < 0.0);
+    }
+  }
+  for (const VoronoiPlane& plane : planes) {
+    if (plane.plane.SignedDistance(q) < 0.0) return false;
+  }
+  return true;
+}
+
+inline bool InEdgeZone(const ConvexPolyhedron& polyhedron, int e, const Eigen::Vector3d& q) {
+  for (const VoronoiPlane& plane : polyhedron.EdgePlanes(e)) {
+    if (plane.plane.SignedDistance(q) < 0.0) return false;
+  }
+  return true;
+}
+
+inline bool InFaceZone(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
+                       int f, const Eigen::Vector3d& q, int own_slot) {
+  const FaceAngleTable* table = tables == nullptr ? nullptr : tables->face(f);
+  // As FaceMoves: outside the prism with no boundary slot counts as over the face.
+  if (!IsOverFace(polyhedron, f, table, q)) return own_slot < 0;
+  return !(polyhedron.face(f).plane.SignedDistance(q) < 0.0);
+}
+
+}  // namespace zone_detail
+
 /// Whether ZoneMoves(polyhedron, tables, f, q, own_slot) is empty, without building the moves:
-/// the test of almost every warm-started update, whose closest pair has not changed.
-bool InZone(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
-            FeatureId f, const Eigen::Vector3d& q, int own_slot);
+/// the test of almost every warm-started update, whose closest pair has not changed. Inline:
+/// it runs twice per update.
+inline bool InZone(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
+                   FeatureId f, const Eigen::Vector3d& q, int own_slot) {
+  switch (f.type) {
+    case FeatureType::kVertex:
+      return zone_detail::InVertexZone(polyhedron, tables, f.index, q);
+    case FeatureType::kEdge:
+      return zone_detail::InEdgeZone(polyhedron, f.index, q);
+    case FeatureType::kFace:
+      return zone_detail::InFaceZone(polyhedron, tables, f.index, q, own_slot);
+    case FeatureType::kNone:
+      break;
+  }
+  return true;
+}
 
 }  // namespace sparsedyn::narrow
