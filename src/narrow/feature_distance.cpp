@@ -192,11 +192,17 @@ FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
       out.p_b = frame.ToA(c.point);
       out.slot_b = c.edge_slot;
     }
-  } else if (vertex_b && !face_a) {
-    // A's edge against B's vertex (the vertex-vertex case is above).
-    const auto ea = Ends(a, fa);
+  } else if (vertex_b) {
+    // A's edge or face against B's vertex (the vertex-vertex case is above).
     out.p_b = frame.ToA(b.vertex(fb.index));
-    out.p_a = ea[0] + ClosestParameterOnSegment(ea[0], ea[1], out.p_b) * (ea[1] - ea[0]);
+    if (face_a) {
+      const FacePoint c = ClosestPointOnFace(a, fa.index, FaceTable(tables_a, fa.index), out.p_b);
+      out.p_a = c.point;
+      out.slot_a = c.edge_slot;
+    } else {
+      const auto ea = Ends(a, fa);
+      out.p_a = ea[0] + ClosestParameterOnSegment(ea[0], ea[1], out.p_b) * (ea[1] - ea[0]);
+    }
   } else if (!face_a && !face_b) {
     // Points and segments: in A's frame.
     const auto ea = Ends(a, fa), eb = Ends(b, fb);
