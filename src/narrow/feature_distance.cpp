@@ -164,11 +164,25 @@ SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
   const Eigen::Vector3d& normal = plane.normal;
   if (over0) offer({0.0, s0, s0 - d0 * normal, -1});
   if (over1) offer({1.0, s1, s1 - d1 * normal, -1});
+  // A closest pair off the polygon's prism has its polygon point on a boundary edge whose side
+  // plane the segment point violates (at a vertex, one of its two edges); a plane meets a
+  // segment once, so an end violates it too. Edges whose side plane both ends satisfy are
+  // never closer (docs/narrow-phase.md#edge-against-face).
   const auto loop = polyhedron.FaceVertices(f);
-  for (std::size_t k = 0; k < loop.size(); ++k) {
+  const auto sides = polyhedron.FacePlanes(f).subspan(1);
+  auto offer_edge = [&](std::size_t k) {
     const SegmentClosest c = ClosestSegmentSegment(s0, s1, polyhedron.vertex(loop[k]),
                                                    polyhedron.vertex(loop[(k + 1) % loop.size()]));
     offer({c.s, c.p, c.q, static_cast<int>(k)});
+  };
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const Plane& side = sides[k].plane;
+    if (side.SignedDistance(s0) < 0.0 || side.SignedDistance(s1) < 0.0) offer_edge(k);
+  }
+  // An end not over the polygon violates a side plane, so something was offered; only NaN
+  // input gets here, and then every edge is offered rather than nothing.
+  if (best_distance == std::numeric_limits<double>::infinity()) {
+    for (std::size_t k = 0; k < loop.size(); ++k) offer_edge(k);
   }
   return best;
 }

@@ -158,6 +158,56 @@ TEST(PairFrame, RotationOfAnyNormIsTheNormalisedQuaternionsRotation) {
   EXPECT_GT(exact, 100);
 }
 
+TEST(ClosestFeatures, SegmentAgainstFaceMatchesAConvexSearchAlongTheSegment) {
+  // The oracle: the distance from a point to a convex polygon is exact (ClosestPointOnFace), and
+  // along a segment it is a convex function of the parameter, so a golden-section search finds
+  // its minimum independently of the pruned edge scan in ClosestSegmentFace.
+  testing::PairGenerator generator(14);
+  int tested = 0, pruned_cases = 0;
+  for (const Shape& shape : generator.generic_shapes()) {
+    const ConvexPolyhedron& p = *shape.polyhedron;
+    const double r = p.bounding_radius();
+    for (int f = 0; f < p.face_count(); ++f) {
+      const Plane& plane = p.face(f).plane;
+      for (int i = 0; i < 30; ++i) {
+        // Ends near the face: some over it, some beside it, some on either side of its plane.
+        const Eigen::Vector3d on_face = p.vertex(p.FaceVertices(f)[0]);
+        auto near = [&] {
+          return Eigen::Vector3d(on_face + r * generator.Uniform() * generator.RandomUnit() +
+                                 0.3 * r * (generator.Uniform() - 0.2) * plane.normal);
+        };
+        const Eigen::Vector3d s0 = near(), s1 = near();
+        auto distance_at = [&](double t) {
+          const Eigen::Vector3d x = s0 + t * (s1 - s0);
+          return (narrow::ClosestPointOnFace(p, f, nullptr, x).point - x).norm();
+        };
+        double lo = 0.0, hi = 1.0;
+        const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+        for (int k = 0; k < 200 && hi - lo > 1e-15; ++k) {
+          const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+          if (distance_at(m1) < distance_at(m2)) {
+            hi = m2;
+          } else {
+            lo = m1;
+          }
+        }
+        const double oracle = std::min({distance_at(0.0), distance_at(1.0), distance_at(lo)});
+        for (const narrow::FaceAngleTable* table : {shape.tracked->tables().face(f),
+                                                    static_cast<const narrow::FaceAngleTable*>(nullptr)}) {
+          const narrow::SegmentFaceClosest c = narrow::ClosestSegmentFace(p, f, table, s0, s1);
+          const double walk = (c.on_face - c.on_segment).norm();
+          EXPECT_NEAR(walk, oracle, 1e-9 * r) << shape.name << " face " << f;
+          EXPECT_LE(walk, oracle + 1e-12 * r);  // never farther than a sampled point
+          ++tested;
+        }
+        pruned_cases += !narrow::IsOverFace(p, f, nullptr, s0) ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(tested, 5000);
+  EXPECT_GT(pruned_cases, tested / 10);
+}
+
 TEST(ClosestFeatures, InZoneIsTrueExactlyWhenZoneMovesIsEmpty) {
   // The walk's fast test against the moves it stands for, on every feature of the generic
   // shapes, with and without tables, for random points and for points put on a zone plane (the
