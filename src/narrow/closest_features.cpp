@@ -204,7 +204,7 @@ FeaturePair ColdStart(const TrackedPolyhedron& a, const TrackedPolyhedron& b,
 // fills its cached answer in place instead of copying a fresh one over it at every update.
 void FindClosestFeaturesInto(const TrackedPolyhedron& a, const Pose& X_WA,
                              const TrackedPolyhedron& b, const Pose& X_WB,
-                             std::optional<FeaturePair> start,
+                             const std::optional<FeaturePair>& start,
                              const ClosestFeaturesOptions& options, ClosestFeatures& out) {
   const narrow::PairFrame frame(X_WA, X_WB);
   FeaturePair first;
