@@ -32,13 +32,18 @@ struct ContactPrediction {
                               // pair whose features were degenerate (diagnostics)
 };
 
+/// Rotating bodies advance until the gap may have closed to this fraction of the tolerance
+/// (pairs and walls alike): below 1 so that a prediction ends in finitely many steps, near 1 so
+/// that the last steps before contact stay long.
+inline constexpr double kAdvancementTarget = 0.9;
+
 struct ContactPredictionOptions {
   double tolerance = 0.0;   // contact when the distance <= tolerance (m, > 0)
   int max_iterations = 64;  // per call; beyond it kCheckpoint
   // Rotating pairs: each advancement step stops where the gap may first have closed to
   // advancement_target * tolerance (in (0, 1)), so the prediction reaches a gap <= tolerance
   // in finitely many steps and is never later than the first time the gap is that small.
-  double advancement_target = 0.9;
+  double advancement_target = kAdvancementTarget;
   // narrow::SpinRadius of each path when the caller keeps it (it is O(vertices) and constant
   // along a path); < 0: computed here.
   double spin_radius_a = -1.0;

@@ -13,10 +13,6 @@
 namespace sparsedyn {
 namespace {
 
-// A rotating body steps until the gap may have closed to this fraction of the tolerance (as
-// ContactPredictionOptions::advancement_target for pairs).
-constexpr double kWallAdvancementTarget = 0.9;
-
 // The vertex nearest the plane (support in -normal) of the body at `pose`, and its gap.
 struct Nearest {
   int vertex = -1;
@@ -88,7 +84,7 @@ WallContactPrediction PredictWallContact(const TrackedPolyhedron& body, const Ri
     if (nearest.gap <= tolerance) return Finish(Kind::kContact, t, nearest, iteration);
     if (t >= t_end) return Finish(Kind::kNone, t, nearest, iteration);
     if (iteration >= max_iterations) return Finish(Kind::kCheckpoint, t, nearest, iteration);
-    const double target = kWallAdvancementTarget * tolerance;
+    const double target = kAdvancementTarget * tolerance;
     const double speed = -normal.dot(path.centre.VelocityAt(t));
     const double accel = -normal.dot(path.centre.a);
     const double horizon = std::min(t_end - t, narrow::kMaxHorizon);

@@ -183,7 +183,7 @@ inline ToiFigures RunWallCheck(std::uint64_t seed, int count, double spin, bool 
   MotionCaseGenerator generator(seed);
   ToiFigures f;
   const bool exact = spin == 0.0;
-  const double level = exact ? kToiTolerance : 0.9 * kToiTolerance;
+  const double level = exact ? kToiTolerance : kAdvancementTarget * kToiTolerance;
   for (int trial = 0; trial < count; ++trial) {
     const Vec3 normal = generator.random().RandomUnit();
     const MotionCase c = generator.Wall(normal, spin, accelerate);
