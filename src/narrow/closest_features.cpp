@@ -203,10 +203,10 @@ FeaturePair ColdStart(const TrackedPolyhedron& a, const TrackedPolyhedron& b,
 // FindClosestFeatures writing into `out` (every field is set on every path), so that the tracker
 // fills its cached answer in place instead of copying a fresh one over it at every update.
 // Inlined into both callers: the call's register saves are ~1% of a warm update.
-[[gnu::always_inline]] inline void FindClosestFeaturesInto(const TrackedPolyhedron& a, const Pose& X_WA,
-                             const TrackedPolyhedron& b, const Pose& X_WB,
-                             const std::optional<FeaturePair>& start,
-                             const ClosestFeaturesOptions& options, ClosestFeatures& out) {
+[[gnu::always_inline]] inline void FindClosestFeaturesInto(
+    const TrackedPolyhedron& a, const Pose& X_WA, const TrackedPolyhedron& b, const Pose& X_WB,
+    const std::optional<FeaturePair>& start, const ClosestFeaturesOptions& options,
+    ClosestFeatures& out) {
   const narrow::PairFrame frame(X_WA, X_WB);
   FeaturePair first;
   if (start) {

@@ -23,8 +23,7 @@ Nearest NearestVertex(const TrackedPolyhedron& body, const Pose& pose, const Vec
   const ConvexPolyhedron& poly = body.polyhedron();
   const Vec3 down_B = pose.rotation.conjugate() * (-normal);
   Nearest out;
-  out.vertex =
-      previous < 0 ? body.SupportVertex(down_B) : poly.SupportVertexFrom(down_B, previous);
+  out.vertex = previous < 0 ? body.SupportVertex(down_B) : poly.SupportVertexFrom(down_B, previous);
   out.gap = normal.dot(pose.ToWorld(poly.vertex(out.vertex))) - offset;
   return out;
 }
@@ -91,8 +90,7 @@ WallContactPrediction PredictWallContact(const TrackedPolyhedron& body, const Ri
     const std::optional<double> plain =
         narrow::AdvancementStep(nearest.gap - target, speed + spin, accel, horizon);
     if (plain) {
-      narrow::SlabBound bound =
-          narrow::SlabBound::Wall(body, path, spin_radius, normal, offset, t);
+      narrow::SlabBound bound = narrow::SlabBound::Wall(body, path, spin_radius, normal, offset, t);
       const std::optional<double> second_order = bound.Step(target, horizon, *plain);
       t = std::min(t + std::max(*plain, second_order.value_or(0.0)), t_end);
     } else {

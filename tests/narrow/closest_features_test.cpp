@@ -192,8 +192,9 @@ TEST(ClosestFeatures, SegmentAgainstFaceMatchesAConvexSearchAlongTheSegment) {
           }
         }
         const double oracle = std::min({distance_at(0.0), distance_at(1.0), distance_at(lo)});
-        for (const narrow::FaceAngleTable* table : {shape.tracked->tables().face(f),
-                                                    static_cast<const narrow::FaceAngleTable*>(nullptr)}) {
+        for (const narrow::FaceAngleTable* table :
+             {shape.tracked->tables().face(f),
+              static_cast<const narrow::FaceAngleTable*>(nullptr)}) {
           const narrow::SegmentFaceClosest c = narrow::ClosestSegmentFace(p, f, table, s0, s1);
           const double walk = (c.on_face - c.on_segment).norm();
           EXPECT_NEAR(walk, oracle, 1e-9 * r) << shape.name << " face " << f;
@@ -220,12 +221,14 @@ TEST(ClosestFeatures, InZoneIsTrueExactlyWhenZoneMovesIsEmpty) {
     auto check = [&](FeatureId f) {
       const auto planes = p.VoronoiPlanes(f);
       for (int i = 0; i < 40; ++i) {
-        Eigen::Vector3d q = 2.0 * p.bounding_radius() * generator.RandomUnit() * generator.Uniform();
+        Eigen::Vector3d q =
+            2.0 * p.bounding_radius() * generator.RandomUnit() * generator.Uniform();
         if (i % 4 == 0) {  // onto a zone plane
           const Plane& plane = planes[static_cast<std::size_t>(i / 4) % planes.size()].plane;
           q -= plane.SignedDistance(q) * plane.normal;
         }
-        for (const TrackedPolyhedron::Tables* t : {tables, static_cast<decltype(tables)>(nullptr)}) {
+        for (const TrackedPolyhedron::Tables* t :
+             {tables, static_cast<decltype(tables)>(nullptr)}) {
           for (const int slot : {-1, 0}) {
             const bool empty = narrow::ZoneMoves(p, t, f, q, slot).count == 0;
             EXPECT_EQ(narrow::InZone(p, t, f, q, slot), empty)
