@@ -205,11 +205,10 @@ FeaturePair ColdStart(const TrackedPolyhedron& a, const TrackedPolyhedron& b,
 // Inlined into both callers: the call's register saves are ~1% of a warm update.
 [[gnu::always_inline]] inline void FindClosestFeaturesInto(
     const TrackedPolyhedron& a, const Pose& X_WA, const TrackedPolyhedron& b, const Pose& X_WB,
-    const std::optional<FeaturePair>& start, const ClosestFeaturesOptions& options,
-    ClosestFeatures& out) {
+    const FeaturePair* start, const ClosestFeaturesOptions& options, ClosestFeatures& out) {
   const narrow::PairFrame frame(X_WA, X_WB);
   FeaturePair first;
-  if (start) {
+  if (start != nullptr) {
     SPARSEDYN_ASSERT(
         IsValidFeature(a.polyhedron(), start->a) && IsValidFeature(b.polyhedron(), start->b),
         "FindClosestFeatures: start pair is not a feature of each polyhedron");
@@ -290,7 +289,7 @@ ClosestFeatures FindClosestFeatures(const TrackedPolyhedron& a, const Pose& X_WA
                                     std::optional<FeaturePair> start,
                                     const ClosestFeaturesOptions& options) {
   ClosestFeatures out;
-  FindClosestFeaturesInto(a, X_WA, b, X_WB, start, options, out);
+  FindClosestFeaturesInto(a, X_WA, b, X_WB, start ? &*start : nullptr, options, out);
   return out;
 }
 
@@ -299,15 +298,18 @@ ClosestFeatureTracker::ClosestFeatureTracker(const TrackedPolyhedron& a, const T
     : a_(&a), b_(&b), options_(options) {}
 
 const ClosestFeatures& ClosestFeatureTracker::Update(const Pose& X_WA, const Pose& X_WB) {
-  std::optional<FeaturePair> start;
-  if (has_last_) start = last_.features;
-  FindClosestFeaturesInto(*a_, X_WA, *b_, X_WB, start, options_, last_);
+  // The start by pointer, not std::optional: copying through the optional cost ~16 of the
+  // ~850 instructions of an update. `previous` outlives the overwrite of last_.features.
+  const FeaturePair previous = last_.features;
+  const bool warm = has_last_;
+  FindClosestFeaturesInto(*a_, X_WA, *b_, X_WB, warm ? &previous : nullptr, options_, last_);
   has_last_ = true;
   ++calls_;
   steps_ += static_cast<std::uint64_t>(last_.steps);
   if (last_.status == ClosestFeatures::Status::kIterationCap) {
     ++cap_failures_;
-    last_failure_ = DescribeQuery(*a_, X_WA, *b_, X_WB, start);
+    last_failure_ = DescribeQuery(*a_, X_WA, *b_, X_WB,
+                                  warm ? std::optional<FeaturePair>(previous) : std::nullopt);
   }
   return last_;
 }
