@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The hard-sphere gas (issue #2's benchmark): collisions/s and events/s on one core for
-// N = 10^3 .. 10^6 at packing 0.05, 0.10, 0.30, AllPairs vs Grid; bytes per body; stale
-// fraction. Each run builds the gas, lets it settle for 2 collisions per particle (not timed),
-// then times a stretch of about 20 collisions per particle (fewer at large N).
+// N = 10^3 .. 10^6 (and 10^7 at 0.05) at packing 0.05, 0.10, 0.30, AllPairs vs Grid; bytes per
+// body; stale fraction. Each run builds the gas, lets it settle for 2 collisions per particle (0.5 at 10^7;
+// not timed), then times a stretch of about 20 collisions per particle (fewer at large N).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -24,7 +24,10 @@ double CollisionRate(double packing) {
 // Runs the gas of `n` bodies at `packing` and reports the counters below.
 void RunGas(benchmark::State& state, std::uint32_t n, double packing, Broadphase broadphase,
             double cells_per_body) {
-  const double per_particle = n >= 1000000 ? 4.0 : (n >= 100000 ? 10.0 : 20.0);
+  // Shorter stretches at large N keep a run within minutes (10^7: ~5 million collisions).
+  const double per_particle =
+      n >= 10000000 ? 1.0 : (n >= 1000000 ? 4.0 : (n >= 100000 ? 10.0 : 20.0));
+  const double settle = n >= 10000000 ? 0.5 : 2.0;
   scenes::GasOptions options;
   options.n = n;
   options.packing = packing;
@@ -37,12 +40,12 @@ void RunGas(benchmark::State& state, std::uint32_t n, double packing, Broadphase
     state.PauseTiming();
     World world = *scenes::MakeGas(options, settings);
     const double rate = CollisionRate(packing);
-    if (!world.AdvanceTo(2.0 / rate)) state.SkipWithError("stalled");
+    if (!world.AdvanceTo(settle / rate)) state.SkipWithError("stalled");
     const Statistics before = world.Stats();
     state.ResumeTiming();
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpu_start = std::clock();
-    if (!world.AdvanceTo((2.0 + per_particle) / rate)) state.SkipWithError("stalled");
+    if (!world.AdvanceTo((settle + per_particle) / rate)) state.SkipWithError("stalled");
     cpu_seconds += static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     simulated += per_particle / rate;
@@ -91,6 +94,8 @@ void GasArguments(benchmark::internal::Benchmark* b) {
     for (const int n : {1000, 10000, 100000, 1000000}) {
       b->Args({n, packing, static_cast<int>(Broadphase::kGrid)});
     }
+    // 10^7 fits in memory (~2 GB at ~200 bytes per body) but takes minutes: packing 0.05 only.
+    if (packing == 5) b->Args({10000000, packing, static_cast<int>(Broadphase::kGrid)});
     // AllPairs compares with 27 images of every body in a periodic box: N = 10^3 only.
     b->Args({1000, packing, static_cast<int>(Broadphase::kAllPairs)});
   }
