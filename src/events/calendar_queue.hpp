@@ -78,6 +78,10 @@ class CalendarQueue {
   /// Removes every entry and returns to the initial bucket layout.
   void Clear();
 
+  /// Room for slots 0 .. slots - 1 without regrowing: Set() grows the slot array one slot at a
+  /// time, which leaves up to twice the memory needed when the number of slots is known.
+  void Reserve(std::size_t slots) { entries_.reserve(slots); }
+
   /// Bytes held, for the memory-per-body figure.
   std::size_t MemoryBytes() const;
 

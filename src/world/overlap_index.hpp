@@ -20,10 +20,11 @@ class OverlapIndex {
   explicit OverlapIndex(const Vec3& origin = Vec3::Zero(), const Vec3& periodic_length = Vec3::Zero())
       : origin_(origin), periodic_length_(periodic_length) {}
 
+  /// Empties the index and releases its memory (it is only needed before the start).
   void Clear() {
-    cells_.clear();
-    points_.clear();
-    radii_.clear();
+    cells_ = {};
+    points_ = {};
+    radii_ = {};
   }
 
   /// Adds body `index` (which must equal the number of bodies added so far).

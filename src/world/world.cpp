@@ -256,6 +256,7 @@ void World::Impl::Start() {
   grid_.reset();
   all_pairs_.reset();
   queue_.Clear();
+  queue_.Reserve(n);  // one slot per element
   engagement_queue_.Clear();
   engagements_.Clear();
 
