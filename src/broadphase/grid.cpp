@@ -38,6 +38,18 @@ Grid::Grid(const Config& config, std::uint32_t element_capacity)
   n_ = CellCounts(config);
   for (int k = 0; k < 3; ++k) size_[k] = length_[k] / n_[k];
   stride_ = {1u, static_cast<std::uint32_t>(n_[0]), static_cast<std::uint32_t>(n_[0] * n_[1])};
+  const std::int32_t sy = n_[0], sz = n_[0] * n_[1];
+  for (int dz = -1, r = 0; dz <= 1; ++dz) {
+    for (int dy = -1; dy <= 1; ++dy, ++r) around_rows_[r] = dz * sz + dy * sy - 1;
+  }
+  for (int direction = -1; direction <= 1; direction += 2) {
+    const int side = direction > 0 ? 1 : 0;
+    for (int a = -1, r = 0; a <= 1; ++a) {
+      for (int b = -1; b <= 1; ++b, ++r) new_cells_[side][r] = direction + a * sy + b * sz;
+      new_cells_[2 + side][a + 1] = direction * sy + a * sz - 1;
+      new_cells_[4 + side][a + 1] = direction * sz + a * sy - 1;
+    }
+  }
   head_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2], kNoIndex);
   next_.assign(element_capacity, kNoIndex);
   prev_.assign(element_capacity, kNoIndex);
@@ -112,10 +124,10 @@ double Grid::PredictCrossing(const Mover& m, std::uint32_t cell, double min_dt, 
   return best;
 }
 
-Vec3 Grid::Move(std::uint32_t e, int axis, int direction) {
+Grid::Place Grid::Move(std::uint32_t e, int axis, int direction, Vec3& shift) {
   std::array<int, 3> c = Coordinates(cell_of_[e]);
   c[axis] += direction;
-  Vec3 shift = Vec3::Zero();
+  shift = Vec3::Zero();
   if (c[axis] < 0) {
     c[axis] += n_[axis];
     shift[axis] = length_[axis];
@@ -125,8 +137,9 @@ Vec3 Grid::Move(std::uint32_t e, int axis, int direction) {
   }
   SPARSEDYN_ASSERT(c[axis] >= 0 && c[axis] < n_[axis], "Grid::Move outside a walled grid");
   Remove(e);
-  Link(e, Index(c));
-  return shift;
+  const std::uint32_t cell = Index(c);
+  Link(e, cell);
+  return {cell, c};
 }
 
 void Grid::Permute(const std::vector<std::uint32_t>& old_of_new) {

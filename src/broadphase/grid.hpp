@@ -45,28 +45,30 @@ class Grid {
   double PredictCrossing(const Mover& m, std::uint32_t cell, double min_dt, int& axis,
                          int& direction) const;
 
+  /// A cell and its coordinates, worked out once per event for the scans and the crossing
+  /// prediction below (the coordinates cost two integer divisions).
+  struct Place {
+    std::uint32_t cell;
+    std::array<int, 3> at;
+  };
+  Place PlaceOf(std::uint32_t e) const { return {cell_of_[e], Coordinates(cell_of_[e])}; }
+
   /// PredictCrossing for a centre on a straight line (p0 + v dt, no acceleration): the same
   /// answer with a division per axis instead of the general quadratic.
-  double PredictLinearCrossing(const Vec3& p0, const Vec3& v, std::uint32_t cell, double min_dt,
+  double PredictLinearCrossing(const Vec3& p0, const Vec3& v, const Place& place, double min_dt,
                                int& axis, int& direction) const {
-    const std::array<int, 3> c = Coordinates(cell);
     double best = kInfinity;
     axis = 0;
     direction = 1;
     for (int k = 0; k < 3; ++k) {
-      double dt = kInfinity;
-      int dir = 1;
-      if (v[k] > 0) {
-        if (periodic_ || c[k] != n_[k] - 1) {
-          const double hi = c[k] == n_[k] - 1 ? lo_[k] + length_[k] : lo_[k] + (c[k] + 1) * size_[k];
-          dt = std::max(min_dt, (hi - p0[k]) / v[k]);
-        }
-      } else if (v[k] < 0) {
-        if (periodic_ || c[k] != 0) {
-          dt = std::max(min_dt, (lo_[k] + c[k] * size_[k] - p0[k]) / v[k]);
-          dir = -1;
-        }
-      }
+      if (!(v[k] > 0 || v[k] < 0)) continue;  // at rest along k (or NaN): never leaves
+      const int dir = v[k] > 0 ? 1 : -1;
+      const int face = place.at[k] + (dir > 0 ? 1 : 0);  // the face's index along k
+      // Faces on the outside of a walled box are not crossings: the walls keep the centre in.
+      if (!periodic_ && (face == 0 || face == n_[k])) continue;
+      // The box faces are exact (lo_ and lo_ + length_), as in PredictCrossing.
+      const double at = face == n_[k] ? lo_[k] + length_[k] : lo_[k] + face * size_[k];
+      const double dt = std::max(min_dt, (at - p0[k]) / v[k]);
       if (dt < best) {
         best = dt;
         axis = k;
@@ -76,35 +78,52 @@ class Grid {
     return best;
   }
 
-  /// Moves element `e` to the neighbouring cell across (axis, direction). Returns the shift to
-  /// add to its position to keep it inside a periodic box (zero unless it wrapped).
-  Vec3 Move(std::uint32_t e, int axis, int direction);
+  /// Moves element `e` to the neighbouring cell across (axis, direction) and returns its new
+  /// place. Sets `shift` to what must be added to its position to keep it inside a periodic box
+  /// (zero unless it wrapped).
+  Place Move(std::uint32_t e, int axis, int direction, Vec3& shift);
 
-  /// Calls fn(j, shift_j) for every element j != e in the 27 cells around e's cell; shift_j is
-  /// the periodic image offset to add to j's position.
+  /// Calls fn(j, shift_j) for every element j != e in the 27 cells around e's cell (at
+  /// `place`, PlaceOf(e)); shift_j is the periodic image offset to add to j's position.
   template <typename Fn>
-  void ForEachNeighbor(std::uint32_t e, Fn&& fn) const {
-    const std::array<int, 3> c = Coordinates(cell_of_[e]);
-    Span x, y, z;  // Single() fills them from count 0; no need to zero the arrays
-    x.count = y.count = z.count = 0;
-    Around(0, c[0], x);
-    Around(1, c[1], y);
-    Around(2, c[2], z);
+  void ForEachNeighbor(std::uint32_t e, const Place& place, Fn&& fn) const {
+    if (Interior(place)) {
+      VisitRows(e, place.cell, around_rows_.data(), 9, fn);
+      return;
+    }
+    Span x, y, z;
+    Around(0, place.at[0], x);
+    Around(1, place.at[1], y);
+    Around(2, place.at[2], z);
     VisitBlock(e, x, y, z, fn);
   }
-
-  /// Calls fn(j, shift_j) for the elements in the 9 cells that became adjacent to e when it
-  /// moved into its current cell across (axis, direction).
   template <typename Fn>
-  void ForEachNewNeighbor(std::uint32_t e, int axis, int direction, Fn&& fn) const {
-    const std::array<int, 3> c = Coordinates(cell_of_[e]);
+  void ForEachNeighbor(std::uint32_t e, Fn&& fn) const {
+    ForEachNeighbor(e, PlaceOf(e), fn);
+  }
+
+  /// Calls fn(j, shift_j) for the elements in the 9 cells that became adjacent to e (at
+  /// `place`, PlaceOf(e)) when it moved into its current cell across (axis, direction).
+  template <typename Fn>
+  void ForEachNewNeighbor(std::uint32_t e, const Place& place, int axis, int direction,
+                          Fn&& fn) const {
+    if (Interior(place)) {
+      const std::int32_t* offsets = new_cells_[axis * 2 + (direction > 0 ? 1 : 0)].data();
+      if (axis == 0) {
+        VisitCells(e, place.cell, offsets, 9, fn);  // a plane across x: no runs along x
+      } else {
+        VisitRows(e, place.cell, offsets, 3, fn);
+      }
+      return;
+    }
     std::array<Span, 3> spans;
     for (int k = 0; k < 3; ++k) {
-      spans[k].count = 0;
       if (k == axis) {
-        Single(k, c[k] + direction, spans[k]);
+        spans[k].count = 0;
+        spans[k].interior = false;
+        Single(k, place.at[k] + direction, spans[k]);
       } else {
-        Around(k, c[k], spans[k]);
+        Around(k, place.at[k], spans[k]);
       }
     }
     VisitBlock(e, spans[0], spans[1], spans[2], fn);
@@ -137,10 +156,12 @@ class Grid {
 
   // Up to three cells along one axis: their coordinate offsets (already multiplied by the
   // axis stride) and periodic image shifts; cells outside a walled grid are left out.
+  // `interior`: the three cells around one inside the grid (consecutive, no shift).
   struct Span {
     std::array<std::uint32_t, 3> offset;
     std::array<double, 3> shift;
     int count;
+    bool interior;
   };
   void Single(int axis, int at, Span& span) const {
     double shift = 0.0;
@@ -158,20 +179,75 @@ class Grid {
     ++span.count;
   }
   void Around(int axis, int at, Span& span) const {
+    span.count = 0;
+    span.interior = at > 0 && at < n_[axis] - 1;
+    if (span.interior) {  // most cells: no wrap, no wall
+      const std::uint32_t stride = stride_[axis];
+      const std::uint32_t middle = static_cast<std::uint32_t>(at) * stride;
+      span.offset = {middle - stride, middle, middle + stride};
+      span.shift = {0.0, 0.0, 0.0};
+      span.count = 3;
+      return;
+    }
     for (int d = -1; d <= 1; ++d) Single(axis, at + d, span);
   }
+  // Not on the outer layer of cells: the 27 cells around are in the grid, unwrapped, at fixed
+  // index offsets (around_rows_, new_cells_).
+  bool Interior(const Place& place) const {
+    return place.at[0] > 0 && place.at[0] < n_[0] - 1 && place.at[1] > 0 &&
+           place.at[1] < n_[1] - 1 && place.at[2] > 0 && place.at[2] < n_[2] - 1;
+  }
+  // Rows of three cells along x starting at cell + offsets[r]; cells + offsets[r] one by one.
+  // Indices wrap as unsigned numbers: cell + offset stays inside the grid for an interior cell.
+  template <typename Fn>
+  void VisitRows(std::uint32_t e, std::uint32_t cell, const std::int32_t* offsets, int count,
+                 Fn& fn) const {
+    const Vec3 shift = Vec3::Zero();
+    for (int r = 0; r < count; ++r) {
+      const std::uint32_t* heads = &head_[cell + static_cast<std::uint32_t>(offsets[r])];
+      const std::uint32_t h0 = heads[0], h1 = heads[1], h2 = heads[2];
+      if ((h0 & h1 & h2) == kNoIndex) continue;  // kNoIndex is all ones
+      VisitList(e, h0, shift, fn);
+      VisitList(e, h1, shift, fn);
+      VisitList(e, h2, shift, fn);
+    }
+  }
+  template <typename Fn>
+  void VisitCells(std::uint32_t e, std::uint32_t cell, const std::int32_t* offsets, int count,
+                  Fn& fn) const {
+    const Vec3 shift = Vec3::Zero();
+    for (int r = 0; r < count; ++r) {
+      const std::uint32_t j = head_[cell + static_cast<std::uint32_t>(offsets[r])];
+      if (j != kNoIndex) VisitList(e, j, shift, fn);
+    }
+  }
+  template <typename Fn>
+  void VisitList(std::uint32_t e, std::uint32_t j, const Vec3& shift, Fn& fn) const {
+    for (; j != kNoIndex; j = next_[j]) {
+      if (j != e) fn(j, shift);
+    }
+  }
+  // The cells of x × y × z, row by row along x. Most cells are empty (a gas has a few cells per
+  // element), so a row of three interior cells is skipped with one test of its three heads.
   template <typename Fn>
   void VisitBlock(std::uint32_t e, const Span& x, const Span& y, const Span& z, Fn& fn) const {
     for (int iz = 0; iz < z.count; ++iz) {
       for (int iy = 0; iy < y.count; ++iy) {
         const std::uint32_t row = z.offset[iz] + y.offset[iy];
+        if (x.interior) {
+          const std::uint32_t* heads = &head_[row + x.offset[0]];
+          const std::uint32_t h0 = heads[0], h1 = heads[1], h2 = heads[2];
+          if ((h0 & h1 & h2) == kNoIndex) continue;  // kNoIndex is all ones
+          const Vec3 shift(0.0, y.shift[iy], z.shift[iz]);
+          VisitList(e, h0, shift, fn);
+          VisitList(e, h1, shift, fn);
+          VisitList(e, h2, shift, fn);
+          continue;
+        }
         for (int ix = 0; ix < x.count; ++ix) {
-          std::uint32_t j = head_[row + x.offset[ix]];
+          const std::uint32_t j = head_[row + x.offset[ix]];
           if (j == kNoIndex) continue;
-          const Vec3 shift(x.shift[ix], y.shift[iy], z.shift[iz]);
-          for (; j != kNoIndex; j = next_[j]) {
-            if (j != e) fn(j, shift);
-          }
+          VisitList(e, j, Vec3(x.shift[ix], y.shift[iy], z.shift[iz]), fn);
         }
       }
     }
@@ -182,6 +258,11 @@ class Grid {
   std::array<double, 3> size_{};
   std::array<int, 3> n_{1, 1, 1};
   std::array<std::uint32_t, 3> stride_{1, 1, 1};  // cell index step per axis (hot in scans)
+  // Around an interior cell: the index offsets of the 9 rows of three cells along x that make
+  // up its 27 neighbours (to each row's first cell), and for each crossing (axis * 2 + (1 if
+  // direction > 0)) the 9 cells that became adjacent: 9 single cells for axis x, else 3 rows.
+  std::array<std::int32_t, 9> around_rows_{};
+  std::array<std::array<std::int32_t, 9>, 6> new_cells_{};
   bool periodic_ = false;
   std::vector<std::uint32_t> head_;     // first element of each cell
   std::vector<std::uint32_t> next_;     // intrusive doubly linked lists of each cell

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdint>
 #include <array>
+#include <bit>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -149,16 +151,18 @@ class World::Impl {
   Mover MoverOf(std::uint32_t i, double t) const;
   Mover BodyMoverOf(std::uint32_t i, double t) const;  // the body itself, without envelope
   void PredictFull(std::uint32_t i);
-  void PredictAfterCrossing(std::uint32_t i, int axis, int direction);
-  template <typename Broadphase>
-  void PredictWith(const Broadphase& broadphase, std::uint32_t i);
-  template <typename Broadphase>
-  void PredictNewCellsWith(const Broadphase& broadphase, std::uint32_t i, int axis, int direction);
+  /// After i crossed into the grid cell at `place` across (axis, direction).
+  void PredictAfterCrossing(std::uint32_t i, const Grid::Place& place, int axis, int direction);
+  /// Scans what `visit` visits from `best` on, adds walls and the cell crossing (i's cell at
+  /// `place`, null without a grid) and schedules the earliest.
+  template <typename VisitNeighbors>
+  void PredictWith(std::uint32_t i, Candidate best, const Grid::Place* place,
+                   VisitNeighbors&& visit);
   void ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift, Candidate& best);
   void Offer(Candidate& best, double t, std::uint32_t j) const;  // keeps the earlier meeting
   template <typename VisitNeighbors>
   void ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors&& visit);
-  Event FinishPrediction(std::uint32_t i, const Candidate& best);
+  Event FinishPrediction(std::uint32_t i, const Candidate& best, const Grid::Place* place);
   double PredictWall(const Mover& mi, std::uint8_t& wall) const;
   void Schedule(std::uint32_t i, const Event& event);
   void PredictEngagement(std::uint32_t k);
@@ -218,11 +222,19 @@ class PhaseTimer {
   std::chrono::steady_clock::time_point start_;
 };
 
+/// std::nextafter(t, -kInfinity) for t not NaN and not -kInfinity, without the library call
+/// (it is on the path of every prediction): the next double below t.
+inline double NextDown(double t) {
+  if (t == 0.0) return -std::numeric_limits<double>::denorm_min();
+  const auto bits = std::bit_cast<std::uint64_t>(t);
+  return std::bit_cast<double>(t > 0 ? bits - 1 : bits + 1);
+}
+
 /// Absolute event time now + dt rounded down, so that rounding never makes an event late.
 inline double EventTime(double now, double dt) {
   if (dt == kInfinity) return kInfinity;
   const double t = now + dt;
-  return (t - now > dt) ? std::nextafter(t, -kInfinity) : t;
+  return (t - now > dt) ? NextDown(t) : t;
 }
 
 /// Wall planes of a walled box: inward unit normal n and offset d (n.x >= d inside).

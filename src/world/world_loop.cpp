@@ -81,10 +81,16 @@ void World::Impl::HandleCellCrossing(std::uint32_t i) {
   const PendingEvent event = event_[i];
   const int axis = event.aux / 2;
   const int direction = (event.aux % 2) ? +1 : -1;
-  const Vec3 shift = grid_ ? grid_->Move(i, axis, direction)
-                           : all_pairs_->Move(i, axis, direction);
-  starts_[i].p0 += shift;  // a periodic wrap: the same motion, seen in the box
-  PredictAfterCrossing(i, axis, direction);
+  // A periodic wrap shifts the position: the same motion, seen in the box.
+  if (!grid_) {
+    starts_[i].p0 += all_pairs_->Move(i, axis, direction);
+    PredictFull(i);
+    return;
+  }
+  Vec3 shift;
+  const Grid::Place place = grid_->Move(i, axis, direction, shift);
+  starts_[i].p0 += shift;
+  PredictAfterCrossing(i, place, axis, direction);
 }
 
 bool World::Impl::TouchingAndApproaching(std::uint32_t i, std::uint32_t j, Vec3& normal,

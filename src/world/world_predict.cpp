@@ -74,7 +74,8 @@ double World::Impl::PredictWall(const Mover& mi, std::uint8_t& wall) const {
   return best;
 }
 
-Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
+Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best,
+                                    const Grid::Place* place) {
   candidate_[i] = best;
   Event event;
   event.time = best.time;
@@ -92,8 +93,8 @@ Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
   int axis = 0, direction = 1;
   double crossing_dt = kInfinity;
   if (straight_lines_ && grid_ && !walled) {
-    crossing_dt = grid_->PredictLinearCrossing(start.p0, start.v0, grid_->CellOf(i), now_ - t0,
-                                               axis, direction);
+    crossing_dt =
+        grid_->PredictLinearCrossing(start.p0, start.v0, *place, now_ - t0, axis, direction);
   } else {
     const Mover m0 = BodyMoverOf(i, t0);
     if (!polyhedra_) {  // a polyhedron meets the walls after its cell crossing is known
@@ -127,14 +128,14 @@ void World::Impl::Schedule(std::uint32_t i, const Event& event) {
   }
 }
 
-template <typename Broadphase>
-void World::Impl::PredictWith(const Broadphase& broadphase, std::uint32_t i) {
+template <typename VisitNeighbors>
+void World::Impl::PredictWith(std::uint32_t i, Candidate best, const Grid::Place* place,
+                              VisitNeighbors&& visit) {
   Event event;
   {
     const PhaseTimer timer(settings_.profile_phases, stats_.seconds_sparse);
-    Candidate best;
-    ScanNeighbors(i, best, [&](auto&& fn) { broadphase.ForEachNeighbor(i, fn); });
-    event = FinishPrediction(i, best);
+    ScanNeighbors(i, best, visit);
+    event = FinishPrediction(i, best, place);
   }
   Schedule(i, event);
 }
@@ -142,38 +143,27 @@ void World::Impl::PredictWith(const Broadphase& broadphase, std::uint32_t i) {
 void World::Impl::PredictFull(std::uint32_t i) {
   ++stats_.predictions;
   if (grid_) {
-    PredictWith(*grid_, i);
+    const Grid::Place place = grid_->PlaceOf(i);
+    PredictWith(i, Candidate{}, &place, [&](auto&& fn) { grid_->ForEachNeighbor(i, place, fn); });
   } else {
-    PredictWith(*all_pairs_, i);
+    PredictWith(i, Candidate{}, nullptr, [&](auto&& fn) { all_pairs_->ForEachNeighbor(i, fn); });
   }
 }
 
-template <typename Broadphase>
-void World::Impl::PredictNewCellsWith(const Broadphase& broadphase, std::uint32_t i, int axis,
-                                      int direction) {
-  Event event;
-  {
-    const PhaseTimer timer(settings_.profile_phases, stats_.seconds_sparse);
-    Candidate best = candidate_[i];
-    ScanNeighbors(i, best,
-                  [&](auto&& fn) { broadphase.ForEachNewNeighbor(i, axis, direction, fn); });
-    event = FinishPrediction(i, best);
-  }
-  Schedule(i, event);
-}
-
-void World::Impl::PredictAfterCrossing(std::uint32_t i, int axis, int direction) {
+void World::Impl::PredictAfterCrossing(std::uint32_t i, const Grid::Place& place, int axis,
+                                       int direction) {
   // The meeting found by the last full prediction still bounds every old neighbour's meeting
   // as long as its target has not changed path; then only the 9 new cells need a look
-  // (docs/sparse-phase.md#cell-crossings). Otherwise, or without a grid, predict in full.
+  // (docs/sparse-phase.md#cell-crossings). Otherwise predict in full.
   const Candidate& kept = candidate_[i];
   const bool kept_valid = kept.time == kInfinity || version_[kept.target] == kept.target_version;
-  if (!grid_ || !kept_valid) {
+  if (!kept_valid) {
     PredictFull(i);
     return;
   }
   ++stats_.partial_predictions;
-  PredictNewCellsWith(*grid_, i, axis, direction);
+  PredictWith(i, kept, &place,
+              [&](auto&& fn) { grid_->ForEachNewNeighbor(i, place, axis, direction, fn); });
 }
 
 void World::Impl::PredictEngagement(std::uint32_t k) {
