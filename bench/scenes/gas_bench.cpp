@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The hard-sphere gas (issue #2's benchmark): collisions/s and events/s on one core for
 // N = 10^3 .. 10^6 (and 10^7 at 0.05) at packing 0.05, 0.10, 0.30, AllPairs vs Grid; bytes per
-// body; stale fraction. Each run builds the gas, lets it settle for 2 collisions per particle (0.5 at 10^7;
-// not timed), then times a stretch of about 20 collisions per particle (fewer at large N).
+// body; stale fraction. Each run builds the gas, lets it settle for 2 collisions per particle (0.5
+// at 10^7; not timed), then times a stretch of about 20 collisions per particle (fewer at large N).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -101,12 +101,18 @@ void GasArguments(benchmark::internal::Benchmark* b) {
   }
 }
 
-BENCHMARK(BM_Gas)->Apply(GasArguments)->ArgNames({"n", "packing%", "allpairs0_grid1"})
-    ->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Gas)
+    ->Apply(GasArguments)
+    ->ArgNames({"n", "packing%", "allpairs0_grid1"})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_GasCells)
     ->ArgsProduct({{10000, 100000}, {5, 30}, {5, 10, 20, 40, 80}})
     ->ArgNames({"n", "packing%", "cells_per_body_x10"})
-    ->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace sparsedyn

@@ -24,7 +24,7 @@ class Grid {
     Vec3 lo = Vec3::Zero();
     Vec3 hi = Vec3::Ones();
     bool periodic = false;
-    double min_cell_size = 1.0;   // the largest interaction distance; cells are never smaller
+    double min_cell_size = 1.0;     // the largest interaction distance; cells are never smaller
     double target_cell_size = 1.0;  // preferred size (>= min) chosen for speed
   };
 
@@ -264,8 +264,8 @@ class Grid {
   std::array<std::int32_t, 9> around_rows_{};
   std::array<std::array<std::int32_t, 9>, 6> new_cells_{};
   bool periodic_ = false;
-  std::vector<std::uint32_t> head_;     // first element of each cell
-  std::vector<std::uint32_t> next_;     // intrusive doubly linked lists of each cell
+  std::vector<std::uint32_t> head_;  // first element of each cell
+  std::vector<std::uint32_t> next_;  // intrusive doubly linked lists of each cell
   std::vector<std::uint32_t> prev_;
   std::vector<std::uint32_t> cell_of_;
 };

@@ -17,7 +17,8 @@ namespace sparsedyn {
 class OverlapIndex {
  public:
   /// `periodic_length` > 0 per axis wraps cell coordinates (periodic boxes).
-  explicit OverlapIndex(const Vec3& origin = Vec3::Zero(), const Vec3& periodic_length = Vec3::Zero())
+  explicit OverlapIndex(const Vec3& origin = Vec3::Zero(),
+                        const Vec3& periodic_length = Vec3::Zero())
       : origin_(origin), periodic_length_(periodic_length) {}
 
   /// Empties the index and releases its memory (it is only needed before the start).
@@ -58,14 +59,16 @@ class OverlapIndex {
  private:
   std::array<std::int64_t, 3> CellOf(const Vec3& p) const {
     std::array<std::int64_t, 3> c{};
-    for (int k = 0; k < 3; ++k) c[k] = static_cast<std::int64_t>(std::floor((p[k] - origin_[k]) / cell_size_));
+    for (int k = 0; k < 3; ++k)
+      c[k] = static_cast<std::int64_t>(std::floor((p[k] - origin_[k]) / cell_size_));
     return c;
   }
 
   std::uint64_t Key(std::array<std::int64_t, 3> c) const {
     for (int k = 0; k < 3; ++k) {
       if (periodic_length_[k] > 0) {
-        const auto n = std::max<std::int64_t>(1, static_cast<std::int64_t>(periodic_length_[k] / cell_size_));
+        const auto n =
+            std::max<std::int64_t>(1, static_cast<std::int64_t>(periodic_length_[k] / cell_size_));
         c[k] = ((c[k] % n) + n) % n;
       }
     }

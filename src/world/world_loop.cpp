@@ -164,8 +164,8 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
   if (result.guarded) ++stats_.collapse_guarded;
   if (on_collision_) {
     const Vec3 p_i = starts_[i].p0;
-    on_collision_(CollisionEvent{now_, PublicId(i), PublicId(j), -1,
-                                 p_i + Radius(i) * normal, normal, result.impulse});
+    on_collision_(CollisionEvent{now_, PublicId(i), PublicId(j), -1, p_i + Radius(i) * normal,
+                                 normal, result.impulse});
   }
   // j's own prediction is superseded: the actor-absent event of §4.2, removed in place.
   const PendingEvent& pending = event_[j];

@@ -25,8 +25,7 @@ void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& 
   // phase at another time, is bit-identical (determinism across broad phases). Not for engaging
   // elements: their spheres may have met and separated since, on unchanged paths, and that past
   // meeting must not come back as one now.
-  const double reference =
-      EngagesOnMeet() ? now_ : std::max(starts_[i].t0, starts_[j].t0);
+  const double reference = EngagesOnMeet() ? now_ : std::max(starts_[i].t0, starts_[j].t0);
   const double dt = PredictMeeting(MoverOf(i, reference), MoverOf(j, reference), shift);
   if (dt != kInfinity) Offer(best, std::max(now_, EventTime(reference, dt)), j);
 }
