@@ -204,13 +204,19 @@ class Grid {
                  Fn& fn) const {
     const Vec3 shift = Vec3::Zero();
     for (int r = 0; r < count; ++r) {
-      const std::uint32_t* heads = &head_[cell + static_cast<std::uint32_t>(offsets[r])];
-      const std::uint32_t h0 = heads[0], h1 = heads[1], h2 = heads[2];
-      if ((h0 & h1 & h2) == kNoIndex) continue;  // kNoIndex is all ones
-      VisitList(e, h0, shift, fn);
-      VisitList(e, h1, shift, fn);
-      VisitList(e, h2, shift, fn);
+      VisitRowOfThree(e, &head_[cell + static_cast<std::uint32_t>(offsets[r])], shift, fn);
     }
+  }
+  // Three consecutive cells from `heads` on, all with image shift `shift`. Most cells are empty
+  // (a gas has a few cells per element), so an empty row costs one test of its three heads.
+  template <typename Fn>
+  void VisitRowOfThree(std::uint32_t e, const std::uint32_t* heads, const Vec3& shift,
+                       Fn& fn) const {
+    const std::uint32_t h0 = heads[0], h1 = heads[1], h2 = heads[2];
+    if ((h0 & h1 & h2) == kNoIndex) return;  // kNoIndex is all ones
+    VisitList(e, h0, shift, fn);
+    VisitList(e, h1, shift, fn);
+    VisitList(e, h2, shift, fn);
   }
   template <typename Fn>
   void VisitCells(std::uint32_t e, std::uint32_t cell, const std::int32_t* offsets, int count,
@@ -227,21 +233,14 @@ class Grid {
       if (j != e) fn(j, shift);
     }
   }
-  // The cells of x × y × z, row by row along x. Most cells are empty (a gas has a few cells per
-  // element), so a row of three interior cells is skipped with one test of its three heads.
+  // The cells of x × y × z, row by row along x (an interior x span as one row of three).
   template <typename Fn>
   void VisitBlock(std::uint32_t e, const Span& x, const Span& y, const Span& z, Fn& fn) const {
     for (int iz = 0; iz < z.count; ++iz) {
       for (int iy = 0; iy < y.count; ++iy) {
         const std::uint32_t row = z.offset[iz] + y.offset[iy];
         if (x.interior) {
-          const std::uint32_t* heads = &head_[row + x.offset[0]];
-          const std::uint32_t h0 = heads[0], h1 = heads[1], h2 = heads[2];
-          if ((h0 & h1 & h2) == kNoIndex) continue;  // kNoIndex is all ones
-          const Vec3 shift(0.0, y.shift[iy], z.shift[iz]);
-          VisitList(e, h0, shift, fn);
-          VisitList(e, h1, shift, fn);
-          VisitList(e, h2, shift, fn);
+          VisitRowOfThree(e, &head_[row + x.offset[0]], Vec3(0.0, y.shift[iy], z.shift[iz]), fn);
           continue;
         }
         for (int ix = 0; ix < x.count; ++ix) {
