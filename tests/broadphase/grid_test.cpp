@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Grid: neighbour visits against brute force, and renumbering (Permute) keeps every element in
-// its cell with the same neighbours.
+// Grid: neighbour visits against brute force (with their periodic image shifts, around every
+// cell and after every crossing), and renumbering (Permute) keeps every element in its cell
+// with the same neighbours.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <random>
 #include <set>
 #include <utility>
@@ -75,6 +78,103 @@ TEST(Grid, NeighboursMatchBruteForceAndSurvivePermutation) {
     grid.Permute(old_of_new);
     for (std::uint32_t e = 0; e < n; ++e) EXPECT_EQ(grid.CellOf(e), old_cells[old_of_new[e]]);
     EXPECT_EQ(NeighbourPairs(grid, n, old_of_new), expected) << "periodic " << periodic;
+  }
+}
+
+// Brute force for a visit around cell `c`: every j != e whose cell, shifted by whole periods,
+// is c + u for some u with u[k] in `offsets[k]`; the value is the image shift that takes j's
+// position there. A cell matched twice would be a visit that double counts: none with >= 3
+// cells per axis.
+using Visits = std::map<std::uint32_t, Vec3>;
+Visits ExpectedVisits(const Grid& grid, const Grid::Config& config, const std::vector<Vec3>& p,
+                      std::uint32_t e, const std::array<int, 3>& c,
+                      const std::array<std::vector<int>, 3>& offsets) {
+  const std::array<int, 3> dims = grid.Dimensions();
+  const Vec3 length = config.hi - config.lo;
+  Visits expected;
+  for (std::uint32_t j = 0; j < p.size(); ++j) {
+    if (j == e) continue;
+    Vec3 shift = Vec3::Zero();
+    bool near = true;
+    for (int k = 0; k < 3 && near; ++k) {
+      const int cj = std::min(dims[k] - 1, static_cast<int>(p[j][k] / grid.CellSize(k)));
+      int matches = 0;
+      for (const int u : offsets[static_cast<std::size_t>(k)]) {
+        const int target = c[k] + u;  // unwrapped
+        if (!config.periodic && (target < 0 || target >= dims[k])) continue;
+        const int wraps = target < 0 ? -1 : (target >= dims[k] ? 1 : 0);
+        if (target - wraps * dims[k] != cj) continue;
+        ++matches;
+        shift[k] = wraps * length[k];
+      }
+      EXPECT_LE(matches, 1);
+      near = matches == 1;
+    }
+    if (near) expected.emplace(j, shift);
+  }
+  return expected;
+}
+
+TEST(Grid, VisitsAroundACellAndAfterACrossingMatchBruteForceWithShifts) {
+  for (const bool periodic : {false, true}) {
+    Grid::Config config;
+    config.hi = Vec3(10, 7, 5);  // 10 x 7 x 5 cells: interior cells and every kind of edge
+    config.periodic = periodic;
+    const std::uint32_t n = 300;
+    Grid grid(config, n);
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<Vec3> p(n);
+    for (std::uint32_t e = 0; e < n; ++e) {
+      p[e] = Vec3(10 * u(rng), 7 * u(rng), 5 * u(rng));
+      grid.Insert(e, p[e]);
+    }
+    const std::array<int, 3> dims = grid.Dimensions();
+    const std::vector<int> around = {-1, 0, 1};
+    int interior_moves = 0, edge_moves = 0;
+    for (std::uint32_t e = 0; e < n; ++e) {
+      std::array<int, 3> c{};
+      for (int k = 0; k < 3; ++k) {
+        c[k] = std::min(dims[k] - 1, static_cast<int>(p[e][k] / grid.CellSize(k)));
+      }
+      Visits visited;
+      grid.ForEachNeighbor(e, grid.PlaceOf(e), [&](std::uint32_t j, const Vec3& shift) {
+        EXPECT_TRUE(visited.emplace(j, shift).second) << "visited twice: " << j;
+      });
+      EXPECT_EQ(visited, ExpectedVisits(grid, config, p, e, c, {around, around, around}))
+          << "around element " << e << " periodic " << periodic;
+
+      for (int axis = 0; axis < 3; ++axis) {
+        for (const int direction : {-1, 1}) {
+          std::array<int, 3> moved = c;
+          moved[axis] += direction;
+          if (!periodic && (moved[axis] < 0 || moved[axis] >= dims[axis])) continue;
+          moved[axis] = (moved[axis] + dims[axis]) % dims[axis];
+          Vec3 shift;
+          const Grid::Place place = grid.Move(e, axis, direction, shift);
+          EXPECT_EQ(place.at, moved);
+          EXPECT_EQ(place.cell, grid.CellOf(e));
+          const bool interior = moved[0] > 0 && moved[0] < dims[0] - 1 && moved[1] > 0 &&
+                                moved[1] < dims[1] - 1 && moved[2] > 0 && moved[2] < dims[2] - 1;
+          (interior ? interior_moves : edge_moves) += 1;
+          std::array<std::vector<int>, 3> offsets = {around, around, around};
+          offsets[static_cast<std::size_t>(axis)] = {direction};
+          Visits fresh;
+          grid.ForEachNewNeighbor(e, place, axis, direction,
+                                  [&](std::uint32_t j, const Vec3& image) {
+                                    EXPECT_TRUE(fresh.emplace(j, image).second) << j;
+                                  });
+          EXPECT_EQ(fresh, ExpectedVisits(grid, config, p, e, moved, offsets))
+              << "element " << e << " moved along " << axis << " by " << direction
+              << " periodic " << periodic;
+          Vec3 back;
+          grid.Move(e, axis, -direction, back);
+          EXPECT_EQ(grid.PlaceOf(e).at, c);
+        }
+      }
+    }
+    EXPECT_GT(interior_moves, 100);
+    EXPECT_GT(edge_moves, 100);
   }
 }
 
