@@ -230,11 +230,15 @@ inline double NextDown(double t) {
   return std::bit_cast<double>(t > 0 ? bits - 1 : bits + 1);
 }
 
-/// Absolute event time now + dt rounded down, so that rounding never makes an event late.
+/// Absolute event time now + dt rounded down: the largest double not after the exact sum, so
+/// that rounding never makes an event late. The rounding error of the sum is exact (Knuth's
+/// two-sum); comparing t - now with dt instead misses the cases where t - now is rounded too.
 inline double EventTime(double now, double dt) {
   if (dt == kInfinity) return kInfinity;
   const double t = now + dt;
-  return (t - now > dt) ? NextDown(t) : t;
+  const double dt_part = t - now;
+  const double error = (now - (t - dt_part)) + (dt - dt_part);
+  return error < 0 ? NextDown(t) : t;
 }
 
 /// Wall planes of a walled box: inward unit normal n and offset d (n.x >= d inside).

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// EventTime's rounding: NextDown against std::nextafter, and t - now <= dt as computed in
-// double precision (its check). Not asserted: t <= now + dt exactly, which fails when t - now
-// is itself rounded (noted on issue #2).
+// EventTime's rounding: NextDown against std::nextafter, and the event time as the largest
+// double not after the exact sum now + dt (checked in 128-bit integers).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <vector>
@@ -43,24 +43,44 @@ TEST(EventTime, NextDownIsNextafterTowardMinusInfinity) {
   }
 }
 
-TEST(EventTime, DifferenceFromNowNeverExceedsDt) {
+// Doubles in [2^-40, 2^21) as exact integers in units of 2^-92 (113 bits at most), so that
+// now + dt is compared with t exactly, independently of any floating-point rounding.
+__extension__ using Exact = __int128;
+Exact ToExact(double x) {
+  if (x == 0) return 0;
+  int e = 0;
+  const auto mantissa = static_cast<std::int64_t>(std::ldexp(std::frexp(x, &e), 53));
+  return static_cast<Exact>(mantissa) << (e - 53 + 92);
+}
+
+// The rule EventTime used before 2026-11-25: round down only when t - now > dt in double.
+double OldEventTime(double now, double dt) {
+  const double t = now + dt;
+  return (t - now > dt) ? NextDown(t) : t;
+}
+
+TEST(EventTime, IsTheLargestDoubleNotAfterTheExactSum) {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> now(0.0, 1e6);
-  std::uniform_int_distribution<int> exponent(-60, 10);
-  int rounded_down = 0;
-  for (int i = 0; i < 100000; ++i) {
-    const double t0 = now(rng);
-    const double dt = std::ldexp(1.0 + 0.5 * now(rng) / 1e6, exponent(rng));
-    const double t = EventTime(t0, dt);
-    EXPECT_LE(t - t0, dt) << t0 << " + " << dt;
-    // Rounded down by at most one step from the nearest sum.
-    const double sum = t0 + dt;
-    EXPECT_TRUE(t == sum || t == std::nextafter(sum, 0.0)) << t0 << " + " << dt;
-    rounded_down += t != sum;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> now_exponent(-30, 19);
+  std::uniform_int_distribution<int> dt_exponent(-40, 19);
+  const double inf = std::numeric_limits<double>::infinity();
+  int rounded_down = 0, old_rule_late = 0;
+  for (int i = 0; i < 400000; ++i) {
+    const double now = i % 16 == 0 ? 0.0 : std::ldexp(1.0 + unit(rng), now_exponent(rng));
+    const double dt = std::ldexp(1.0 + unit(rng), dt_exponent(rng));
+    const Exact sum = ToExact(now) + ToExact(dt);
+    const double t = EventTime(now, dt);
+    ASSERT_LE(ToExact(t), sum) << now << " + " << dt;
+    ASSERT_GT(ToExact(std::nextafter(t, inf)), sum) << now << " + " << dt;
+    rounded_down += t != now + dt;
+    old_rule_late += ToExact(OldEventTime(now, dt)) > sum;
   }
-  EXPECT_GT(rounded_down, 1000);  // the rounding-down branch is exercised
-  EXPECT_EQ(EventTime(1.0, std::numeric_limits<double>::infinity()),
-            std::numeric_limits<double>::infinity());
+  EXPECT_GT(rounded_down, 10000);  // the rounding-down branch is exercised
+  // The sample holds cases the old rule got wrong (one step late), so it can catch that defect.
+  EXPECT_GT(old_rule_late, 0);
+  EXPECT_EQ(EventTime(1.0, inf), inf);
+  EXPECT_EQ(EventTime(1.0, 0.0), 1.0);
 }
 
 }  // namespace
