@@ -25,27 +25,48 @@ double PredictMeeting(const Mover& a, const Mover& b, const Vec3& shift_b,
 double CertifyLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb,
                             const Vec3& shift_b, double reach, double dt);
 
-/// PredictMeeting for spheres of summed radius `reach` on straight lines (no acceleration, no
-/// envelope) at positions pa, pb (+ shift_b, b's periodic image offset) with velocities va, vb:
-/// the hot path of a gas. Inline so that the two early exits (separating; passing wide) cost a
-/// few flops. Bit-identical to PredictMeeting on the same movers.
-inline double PredictLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb,
-                                   const Vec3& vb, const Vec3& shift_b, double reach,
-                                   double horizon = kPredictionHorizon) {
-  const Vec3 dp = pb + shift_b - pa;
-  const Vec3 dv = vb - va;
-  const double b_half = dp.dot(dv);
+/// The uncertified earliest meeting of two spheres of summed radius `reach` on straight lines,
+/// from their relative position dp and velocity dv: kInfinity, 0 (overlapping by round-off and
+/// approaching) or the double-precision root, which FinishLinearMeeting then certifies. Plain
+/// doubles with the two early exits (separating; passing wide) first, as most pairs of a gas
+/// take one of them; the sums run left to right as Eigen's dot products do (same bits).
+inline double LinearMeetingRoot(const double dp[3], const double dv[3], double reach) {
+  const double b_half = dp[0] * dv[0] + dp[1] * dv[1] + dp[2] * dv[2];
   if (b_half >= 0) return kInfinity;  // Not approaching: on straight lines, never again.
-  const double c = dp.dot(dp) - reach * reach;
+  const double c = (dp[0] * dp[0] + dp[1] * dp[1] + dp[2] * dp[2]) - reach * reach;
   if (c <= 0) return 0.0;  // Overlapping by round-off and approaching: meet now.
-  const double a_coef = dv.dot(dv);
+  const double a_coef = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];
   const double disc = b_half * b_half - a_coef * c;
   if (disc < 0) return kInfinity;
   // Smaller root without cancellation: dt = C / (-B/2 + sqrt(disc)) (App. F.1).
-  const double dt = c / (-b_half + std::sqrt(disc));
+  return c / (-b_half + std::sqrt(disc));
+}
+
+/// The end of PredictLinearMeeting: a root `dt` from LinearMeetingRoot, limited to `horizon`
+/// and certified.
+inline double FinishLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb,
+                                  const Vec3& shift_b, double reach, double dt,
+                                  double horizon = kPredictionHorizon) {
   if (!(dt <= horizon)) return kInfinity;
   if (dt == 0.0) return 0.0;
   return CertifyLinearMeeting(pa, va, pb, vb, shift_b, reach, dt);
+}
+
+/// PredictMeeting for spheres of summed radius `reach` on straight lines (no acceleration, no
+/// envelope) at positions pa, pb (+ shift_b, b's periodic image offset) with velocities va, vb.
+/// Inline so that the two early exits cost a few flops. Bit-identical to PredictMeeting on the
+/// same movers.
+inline double PredictLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb,
+                                   const Vec3& shift_b, double reach,
+                                   double horizon = kPredictionHorizon) {
+  double dp[3], dv[3];
+  for (int k = 0; k < 3; ++k) {
+    dp[k] = (pb[k] + shift_b[k]) - pa[k];
+    dv[k] = vb[k] - va[k];
+  }
+  const double dt = LinearMeetingRoot(dp, dv, reach);
+  if (dt == kInfinity) return kInfinity;
+  return FinishLinearMeeting(pa, va, pb, vb, shift_b, reach, dt, horizon);
 }
 
 /// Earliest dt >= 0 at which the sphere of `a` reaches the plane n.x = d from the side n.x > d
