@@ -26,16 +26,18 @@ double CertifyLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb, cons
                             const Vec3& shift_b, double reach, double dt);
 
 /// The uncertified earliest meeting of two spheres of summed radius `reach` on straight lines,
-/// from their relative position dp and velocity dv: kInfinity, 0 (overlapping by round-off and
-/// approaching) or the double-precision root, which FinishLinearMeeting then certifies. Plain
-/// doubles with the two early exits (separating; passing wide) first, as most pairs of a gas
-/// take one of them; the sums run left to right as Eigen's dot products do (same bits).
-inline double LinearMeetingRoot(const double dp[3], const double dv[3], double reach) {
-  const double b_half = dp[0] * dv[0] + dp[1] * dv[1] + dp[2] * dv[2];
+/// from their relative position dp and velocity dv, each as its (x, y) pair and z: kInfinity,
+/// 0 (overlapping by round-off and approaching) or the double-precision root, which
+/// FinishLinearMeeting then certifies. The two early exits (separating; passing wide) come
+/// first, as most pairs of a gas take one of them; x and y go in one SSE2 register, and every
+/// sum runs (x + y) + z as Eigen's 3-vector dot products do (the same bits).
+inline double LinearMeetingRoot(const Eigen::Vector2d& dp_xy, double dp_z,
+                                const Eigen::Vector2d& dv_xy, double dv_z, double reach) {
+  const double b_half = dp_xy.dot(dv_xy) + dp_z * dv_z;
   if (b_half >= 0) return kInfinity;  // Not approaching: on straight lines, never again.
-  const double c = (dp[0] * dp[0] + dp[1] * dp[1] + dp[2] * dp[2]) - reach * reach;
+  const double c = (dp_xy.squaredNorm() + dp_z * dp_z) - reach * reach;
   if (c <= 0) return 0.0;  // Overlapping by round-off and approaching: meet now.
-  const double a_coef = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];
+  const double a_coef = dv_xy.squaredNorm() + dv_z * dv_z;
   const double disc = b_half * b_half - a_coef * c;
   if (disc < 0) return kInfinity;
   // Smaller root without cancellation: dt = C / (-B/2 + sqrt(disc)) (App. F.1).
@@ -59,12 +61,9 @@ inline double FinishLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb
 inline double PredictLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb,
                                    const Vec3& shift_b, double reach,
                                    double horizon = kPredictionHorizon) {
-  double dp[3], dv[3];
-  for (int k = 0; k < 3; ++k) {
-    dp[k] = (pb[k] + shift_b[k]) - pa[k];
-    dv[k] = vb[k] - va[k];
-  }
-  const double dt = LinearMeetingRoot(dp, dv, reach);
+  const Vec3 dp = pb + shift_b - pa;
+  const Vec3 dv = vb - va;
+  const double dt = LinearMeetingRoot(dp.head<2>(), dp[2], dv.head<2>(), dv[2], reach);
   if (dt == kInfinity) return kInfinity;
   return FinishLinearMeeting(pa, va, pb, vb, shift_b, reach, dt, horizon);
 }

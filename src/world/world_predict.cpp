@@ -42,10 +42,10 @@ void World::Impl::ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors
     return;
   }
   // The hot path: straight lines, no envelopes, no engagements. The same numbers as
-  // ConsiderMeeting (MoverOf + PredictMeeting), with the actor's data read once and plain
-  // doubles. Both starts move to the reference time without a branch (x + 0 * v = x up to the
-  // sign of a zero coordinate, which no dot product below can see). Inlined into the cell walk:
-  // a call per pair cost a fifth of the test.
+  // ConsiderMeeting (MoverOf + PredictMeeting), with the actor's data read once, x and y as one
+  // SSE2 pair and z apart. Both starts move to the reference time without a branch (x + 0 v = x
+  // up to the sign of a zero coordinate, which no dot product below can see). Inlined into the
+  // cell walk: a call per pair cost a fifth of the test.
   const PathStart pi = starts_[i];
   const double ri = Radius(i);
   std::uint64_t tests = 0;
@@ -54,15 +54,15 @@ void World::Impl::ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors
     const PathStart& pj = starts_[j];
     const double reference = std::max(pi.t0, pj.t0);
     const double since_i = reference - pi.t0, since_j = reference - pj.t0;
-    double dp[3], dv[3];
-    for (int k = 0; k < 3; ++k) {
-      const double a = pi.p0[k] + since_i * pi.v0[k];
-      const double b = pj.p0[k] + since_j * pj.v0[k];
-      dp[k] = (b + shift[k]) - a;
-      dv[k] = pj.v0[k] - pi.v0[k];
-    }
+    const Eigen::Vector2d a_xy = pi.p0.head<2>() + since_i * pi.v0.head<2>();
+    const Eigen::Vector2d b_xy = pj.p0.head<2>() + since_j * pj.v0.head<2>();
+    const Eigen::Vector2d dp_xy = (b_xy + shift.head<2>()) - a_xy;
+    const Eigen::Vector2d dv_xy = pj.v0.head<2>() - pi.v0.head<2>();
+    const double a_z = pi.p0[2] + since_i * pi.v0[2];
+    const double b_z = pj.p0[2] + since_j * pj.v0[2];
     const double reach = ri + Radius(j);
-    const double dt = LinearMeetingRoot(dp, dv, reach);
+    const double dt =
+        LinearMeetingRoot(dp_xy, (b_z + shift[2]) - a_z, dv_xy, pj.v0[2] - pi.v0[2], reach);
     if (dt != kInfinity) OfferLinearMeeting(pi, j, shift, reach, dt, best);
   });
   stats_.pair_tests += tests;
