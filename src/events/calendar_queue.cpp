@@ -31,15 +31,15 @@ constexpr double kMaxNearPerPop = 24.0;
 
 }  // namespace
 
-CalendarQueue::CalendarQueue() : heads_(kMinBuckets, kNoIndex) {}
+CalendarQueue::CalendarQueue() : heads_(kMinBuckets, kNoIndex) { SetYear(); }
 
 std::uint32_t CalendarQueue::Classify(double time) const {
   // A monotone map of time to a bucket: t1 <= t2 gives q1 <= q2 (IEEE subtraction and
   // multiplication by a positive constant are monotone), so an earlier bucket never holds a
   // later time. NaN q (t and the origin the same infinity) goes to the exact heap.
   const double q = (time - origin_) * inverse_width_;
-  if (!(q >= static_cast<double>(current_) + 1.0)) return kNear;
-  if (q >= static_cast<double>(heads_.size())) return kOverflow;
+  if (!(q >= current_end_)) return kNear;
+  if (q >= year_end_) return kOverflow;
   return static_cast<std::uint32_t>(q);
 }
 
@@ -83,7 +83,7 @@ void CalendarQueue::Set(std::uint32_t slot, double time, EventKind kind) {
   // An empty queue can start its year anywhere: start it at this entry.
   if (size_ == 0) {
     origin_ = time;
-    current_ = 0;
+    SetCurrent(0);
   }
   const std::uint32_t where = Classify(time);
   const std::uint32_t was = entries_[slot].where;
@@ -162,7 +162,7 @@ void CalendarQueue::Refill() {
       Rollover();
       continue;
     }
-    current_ = b;
+    SetCurrent(b);
 
     // Its list becomes the heap (Floyd's bottom-up heap construction).
     for (std::uint32_t slot = heads_[b]; slot != kNoIndex;) {
@@ -194,7 +194,7 @@ void CalendarQueue::Rollover() {
   }
   overflow_head_ = kNoIndex;
   origin_ = earliest;
-  current_ = 0;
+  SetCurrent(0);
   scan_cost_ += scratch_.size();
   for (const std::uint32_t slot : scratch_) Link(slot, Classify(entries_[slot].time));
 }
@@ -218,12 +218,13 @@ void CalendarQueue::Rebuild() {
   // New year: about one bucket per entry, the width from the event spacing, starting at the
   // earliest entry (which therefore lands in the heap: the head is always there).
   heads_.assign(std::max(kMinBuckets, std::bit_ceil(size_)), kNoIndex);
+  SetYear();
   if (!scratch_.empty()) {
     EstimateWidth();
     double earliest = kInfinity;
     for (const std::uint32_t slot : scratch_) earliest = std::min(earliest, entries_[slot].time);
     origin_ = earliest;
-    current_ = 0;
+    SetCurrent(0);
     for (const std::uint32_t slot : scratch_) Link(slot, Classify(entries_[slot].time));
   }
   ++rebuilds_;
@@ -291,12 +292,13 @@ void CalendarQueue::Clear() {
   entries_.clear();
   near_.clear();
   heads_.assign(kMinBuckets, kNoIndex);
+  SetYear();
   overflow_head_ = kNoIndex;
   size_ = 0;
   origin_ = 0.0;
   width_ = 1.0;
   inverse_width_ = 1.0;
-  current_ = 0;
+  SetCurrent(0);
   rebuilds_ = 0;
   ResetCounters();
 }
