@@ -26,8 +26,9 @@ constexpr std::uint64_t kMinPopSample = 32;
 // Width adaptation thresholds, per pop: more empty buckets scanned (plus entries re-bucketed
 // at a year's end) than kMaxScanPerPop means the buckets are too narrow, more entries in the
 // current bucket's heap than kMaxNearPerPop means they are too wide.
-constexpr double kMaxScanPerPop = 4.0;
-constexpr double kMaxNearPerPop = 24.0;
+// Whole numbers: Refill, on every refill, compares in integers.
+constexpr std::uint64_t kMaxScanPerPop = 4;
+constexpr std::uint64_t kMaxNearPerPop = 24;
 
 }  // namespace
 
@@ -131,9 +132,7 @@ void CalendarQueue::Pop() {
 
   // Once per window of a year's worth of pops: does the width still fit the event spacing?
   if (pops_ >= heads_.size()) {
-    const auto pops = static_cast<double>(pops_);
-    if (static_cast<double>(near_sizes_) > kMaxNearPerPop * pops ||
-        static_cast<double>(scan_cost_) > kMaxScanPerPop * pops) {
+    if (near_sizes_ > kMaxNearPerPop * pops_ || scan_cost_ > kMaxScanPerPop * pops_) {
       Rebuild();
       return;
     }
@@ -179,8 +178,7 @@ void CalendarQueue::Refill() {
 
   // Too much scanning for the pops it served (many empty buckets or year ends): the buckets
   // are too narrow. The rebuild costs O(Size()), which this wasted work already paid for.
-  const auto budget = static_cast<double>(std::max<std::uint64_t>(pops_, heads_.size()));
-  if (static_cast<double>(scan_cost_) > kMaxScanPerPop * budget) Rebuild();
+  if (scan_cost_ > kMaxScanPerPop * std::max<std::uint64_t>(pops_, heads_.size())) Rebuild();
 }
 
 void CalendarQueue::Rollover() {
