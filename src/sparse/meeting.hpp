@@ -25,17 +25,21 @@ double PredictMeeting(const Mover& a, const Mover& b, const Vec3& shift_b,
 double CertifyLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb,
                             const Vec3& shift_b, double reach, double dt);
 
-/// The uncertified earliest meeting of two spheres of summed radius `reach` on straight lines,
-/// from their relative position dp and velocity dv, each as its (x, y) pair and z: kInfinity,
-/// 0 (overlapping by round-off and approaching) or the double-precision root, which
-/// FinishLinearMeeting then certifies. The two early exits (separating; passing wide) come
-/// first, as most pairs of a gas take one of them; x and y go in one SSE2 register, and every
-/// sum runs (x + y) + z as Eigen's 3-vector dot products do (the same bits).
+/// The uncertified earliest meeting of two spheres on straight lines, from their relative
+/// position dp and velocity dv, each as its (x, y) pair and z, and their summed radius, which
+/// `reach()` returns and which is only asked for once the pair is found approaching (half the
+/// pairs of a gas are not: their radii are never loaded). kInfinity, 0 (overlapping by
+/// round-off and approaching) or the double-precision root, which FinishLinearMeeting then
+/// certifies. The two early exits (separating; passing wide) come first, as most pairs of a
+/// gas take one of them; x and y go in one SSE2 register, and every sum runs (x + y) + z as
+/// Eigen's 3-vector dot products do (the same bits).
+template <typename Reach>
 inline double LinearMeetingRoot(const Eigen::Vector2d& dp_xy, double dp_z,
-                                const Eigen::Vector2d& dv_xy, double dv_z, double reach) {
+                                const Eigen::Vector2d& dv_xy, double dv_z, const Reach& reach) {
   const double b_half = dp_xy.dot(dv_xy) + dp_z * dv_z;
   if (b_half >= 0) return kInfinity;  // Not approaching: on straight lines, never again.
-  const double c = (dp_xy.squaredNorm() + dp_z * dp_z) - reach * reach;
+  const double r = reach();
+  const double c = (dp_xy.squaredNorm() + dp_z * dp_z) - r * r;
   if (c <= 0) return 0.0;  // Overlapping by round-off and approaching: meet now.
   const double a_coef = dv_xy.squaredNorm() + dv_z * dv_z;
   const double disc = b_half * b_half - a_coef * c;
@@ -63,7 +67,8 @@ inline double PredictLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& p
                                    double horizon = kPredictionHorizon) {
   const Vec3 dp = pb + shift_b - pa;
   const Vec3 dv = vb - va;
-  const double dt = LinearMeetingRoot(dp.head<2>(), dp[2], dv.head<2>(), dv[2], reach);
+  const double dt =
+      LinearMeetingRoot(dp.head<2>(), dp[2], dv.head<2>(), dv[2], [reach] { return reach; });
   if (dt == kInfinity) return kInfinity;
   return FinishLinearMeeting(pa, va, pb, vb, shift_b, reach, dt, horizon);
 }

@@ -60,10 +60,10 @@ void World::Impl::ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors
     const Eigen::Vector2d dv_xy = pj.v0.head<2>() - pi.v0.head<2>();
     const double a_z = pi.p0[2] + since_i * pi.v0[2];
     const double b_z = pj.p0[2] + since_j * pj.v0[2];
-    const double reach = ri + Radius(j);
+    const auto reach = [&] { return ri + Radius(j); };
     const double dt =
         LinearMeetingRoot(dp_xy, (b_z + shift[2]) - a_z, dv_xy, pj.v0[2] - pi.v0[2], reach);
-    if (dt != kInfinity) OfferLinearMeeting(pi, j, shift, reach, dt, best);
+    if (dt != kInfinity) OfferLinearMeeting(pi, j, shift, reach(), dt, best);
   });
   stats_.pair_tests += tests;
 }
