@@ -36,7 +36,16 @@ bool Grid::Feasible(const Config& config) {
 Grid::Grid(const Config& config, std::uint32_t element_capacity)
     : lo_(config.lo), length_(config.hi - config.lo), periodic_(config.periodic) {
   n_ = CellCounts(config);
-  for (int k = 0; k < 3; ++k) size_[k] = length_[k] / n_[k];
+  for (int k = 0; k < 3; ++k) {
+    size_[k] = length_[k] / n_[k];
+    faces_[k].resize(static_cast<std::size_t>(n_[k]) + 1);
+    for (int face = 0; face < n_[k]; ++face) faces_[k][face] = lo_[k] + face * size_[k];
+    faces_[k][n_[k]] = lo_[k] + length_[k];
+    if (!periodic_) {
+      faces_[k][0] = -kInfinity;
+      faces_[k][n_[k]] = kInfinity;
+    }
+  }
   stride_ = {1u, static_cast<std::uint32_t>(n_[0]), static_cast<std::uint32_t>(n_[0] * n_[1])};
   const std::int32_t sy = n_[0], sz = n_[0] * n_[1];
   for (int dz = -1, r = 0; dz <= 1; ++dz) {
@@ -170,7 +179,8 @@ std::uint64_t Grid::MortonKey(std::uint32_t cell) const {
 
 std::size_t Grid::MemoryBytes() const {
   return (head_.capacity() + next_.capacity() + prev_.capacity() + cell_of_.capacity()) *
-         sizeof(std::uint32_t);
+             sizeof(std::uint32_t) +
+         (faces_[0].capacity() + faces_[1].capacity() + faces_[2].capacity()) * sizeof(double);
 }
 
 }  // namespace sparsedyn

@@ -64,11 +64,7 @@ class Grid {
       if (!(v[k] > 0 || v[k] < 0)) continue;  // at rest along k (or NaN): never leaves
       const int dir = v[k] > 0 ? 1 : -1;
       const int face = place.at[k] + (dir > 0 ? 1 : 0);  // the face's index along k
-      // Faces on the outside of a walled box are not crossings: the walls keep the centre in.
-      if (!periodic_ && (face == 0 || face == n_[k])) continue;
-      // The box faces are exact (lo_ and lo_ + length_), as in PredictCrossing.
-      const double at = face == n_[k] ? lo_[k] + length_[k] : lo_[k] + face * size_[k];
-      const double dt = std::max(min_dt, (at - p0[k]) / v[k]);
+      const double dt = std::max(min_dt, (faces_[k][face] - p0[k]) / v[k]);
       if (dt < best) {
         best = dt;
         axis = k;
@@ -257,6 +253,10 @@ class Grid {
   std::array<double, 3> size_{};
   std::array<int, 3> n_{1, 1, 1};
   std::array<std::uint32_t, 3> stride_{1, 1, 1};  // cell index step per axis (hot in scans)
+  // The positions of the n_[k] + 1 faces along each axis, as PredictCrossing works them out
+  // (the box faces exact: lo_ and lo_ + length_); the outer faces of a walled box, which are
+  // no crossings, at -/+ infinity, which a centre never reaches.
+  std::array<std::vector<double>, 3> faces_;
   // Around an interior cell: the index offsets of the 9 rows of three cells along x that make
   // up its 27 neighbours (to each row's first cell), and for each crossing (axis * 2 + (1 if
   // direction > 0)) the 9 cells that became adjacent: 9 single cells for axis x, else 3 rows.

@@ -26,20 +26,21 @@ constexpr std::uint64_t kMinPopSample = 32;
 // Width adaptation thresholds, per pop: more empty buckets scanned (plus entries re-bucketed
 // at a year's end) than kMaxScanPerPop means the buckets are too narrow, more entries in the
 // current bucket's heap than kMaxNearPerPop means they are too wide.
-constexpr double kMaxScanPerPop = 4.0;
-constexpr double kMaxNearPerPop = 24.0;
+// Whole numbers: Refill, on every refill, compares in integers.
+constexpr std::uint64_t kMaxScanPerPop = 4;
+constexpr std::uint64_t kMaxNearPerPop = 24;
 
 }  // namespace
 
-CalendarQueue::CalendarQueue() : heads_(kMinBuckets, kNoIndex) {}
+CalendarQueue::CalendarQueue() : heads_(kMinBuckets, kNoIndex) { SetYear(); }
 
 std::uint32_t CalendarQueue::Classify(double time) const {
   // A monotone map of time to a bucket: t1 <= t2 gives q1 <= q2 (IEEE subtraction and
   // multiplication by a positive constant are monotone), so an earlier bucket never holds a
   // later time. NaN q (t and the origin the same infinity) goes to the exact heap.
   const double q = (time - origin_) * inverse_width_;
-  if (!(q >= static_cast<double>(current_) + 1.0)) return kNear;
-  if (q >= static_cast<double>(heads_.size())) return kOverflow;
+  if (!(q >= current_end_)) return kNear;
+  if (q >= year_end_) return kOverflow;
   return static_cast<std::uint32_t>(q);
 }
 
@@ -83,7 +84,7 @@ void CalendarQueue::Set(std::uint32_t slot, double time, EventKind kind) {
   // An empty queue can start its year anywhere: start it at this entry.
   if (size_ == 0) {
     origin_ = time;
-    current_ = 0;
+    SetCurrent(0);
   }
   const std::uint32_t where = Classify(time);
   const std::uint32_t was = entries_[slot].where;
@@ -131,9 +132,7 @@ void CalendarQueue::Pop() {
 
   // Once per window of a year's worth of pops: does the width still fit the event spacing?
   if (pops_ >= heads_.size()) {
-    const auto pops = static_cast<double>(pops_);
-    if (static_cast<double>(near_sizes_) > kMaxNearPerPop * pops ||
-        static_cast<double>(scan_cost_) > kMaxScanPerPop * pops) {
+    if (near_sizes_ > kMaxNearPerPop * pops_ || scan_cost_ > kMaxScanPerPop * pops_) {
       Rebuild();
       return;
     }
@@ -162,7 +161,7 @@ void CalendarQueue::Refill() {
       Rollover();
       continue;
     }
-    current_ = b;
+    SetCurrent(b);
 
     // Its list becomes the heap (Floyd's bottom-up heap construction).
     for (std::uint32_t slot = heads_[b]; slot != kNoIndex;) {
@@ -179,8 +178,7 @@ void CalendarQueue::Refill() {
 
   // Too much scanning for the pops it served (many empty buckets or year ends): the buckets
   // are too narrow. The rebuild costs O(Size()), which this wasted work already paid for.
-  const auto budget = static_cast<double>(std::max<std::uint64_t>(pops_, heads_.size()));
-  if (static_cast<double>(scan_cost_) > kMaxScanPerPop * budget) Rebuild();
+  if (scan_cost_ > kMaxScanPerPop * std::max<std::uint64_t>(pops_, heads_.size())) Rebuild();
 }
 
 void CalendarQueue::Rollover() {
@@ -194,7 +192,7 @@ void CalendarQueue::Rollover() {
   }
   overflow_head_ = kNoIndex;
   origin_ = earliest;
-  current_ = 0;
+  SetCurrent(0);
   scan_cost_ += scratch_.size();
   for (const std::uint32_t slot : scratch_) Link(slot, Classify(entries_[slot].time));
 }
@@ -218,12 +216,13 @@ void CalendarQueue::Rebuild() {
   // New year: about one bucket per entry, the width from the event spacing, starting at the
   // earliest entry (which therefore lands in the heap: the head is always there).
   heads_.assign(std::max(kMinBuckets, std::bit_ceil(size_)), kNoIndex);
+  SetYear();
   if (!scratch_.empty()) {
     EstimateWidth();
     double earliest = kInfinity;
     for (const std::uint32_t slot : scratch_) earliest = std::min(earliest, entries_[slot].time);
     origin_ = earliest;
-    current_ = 0;
+    SetCurrent(0);
     for (const std::uint32_t slot : scratch_) Link(slot, Classify(entries_[slot].time));
   }
   ++rebuilds_;
@@ -291,12 +290,13 @@ void CalendarQueue::Clear() {
   entries_.clear();
   near_.clear();
   heads_.assign(kMinBuckets, kNoIndex);
+  SetYear();
   overflow_head_ = kNoIndex;
   size_ = 0;
   origin_ = 0.0;
   width_ = 1.0;
   inverse_width_ = 1.0;
-  current_ = 0;
+  SetCurrent(0);
   rebuilds_ = 0;
   ResetCounters();
 }

@@ -25,27 +25,52 @@ double PredictMeeting(const Mover& a, const Mover& b, const Vec3& shift_b,
 double CertifyLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb,
                             const Vec3& shift_b, double reach, double dt);
 
-/// PredictMeeting for spheres of summed radius `reach` on straight lines (no acceleration, no
-/// envelope) at positions pa, pb (+ shift_b, b's periodic image offset) with velocities va, vb:
-/// the hot path of a gas. Inline so that the two early exits (separating; passing wide) cost a
-/// few flops. Bit-identical to PredictMeeting on the same movers.
-inline double PredictLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb,
-                                   const Vec3& vb, const Vec3& shift_b, double reach,
-                                   double horizon = kPredictionHorizon) {
-  const Vec3 dp = pb + shift_b - pa;
-  const Vec3 dv = vb - va;
-  const double b_half = dp.dot(dv);
+/// The uncertified earliest meeting of two spheres on straight lines, from their relative
+/// position dp and velocity dv, each as its (x, y) pair and z, and their summed radius, which
+/// `reach()` returns and which is only asked for once the pair is found approaching (half the
+/// pairs of a gas are not: their radii are never loaded). kInfinity, 0 (overlapping by
+/// round-off and approaching) or the double-precision root, which FinishLinearMeeting then
+/// certifies. The two early exits (separating; passing wide) come first, as most pairs of a
+/// gas take one of them; x and y go in one SSE2 register, and every sum runs (x + y) + z as
+/// Eigen's 3-vector dot products do (the same bits).
+template <typename Reach>
+inline double LinearMeetingRoot(const Eigen::Vector2d& dp_xy, double dp_z,
+                                const Eigen::Vector2d& dv_xy, double dv_z, const Reach& reach) {
+  const double b_half = dp_xy.dot(dv_xy) + dp_z * dv_z;
   if (b_half >= 0) return kInfinity;  // Not approaching: on straight lines, never again.
-  const double c = dp.dot(dp) - reach * reach;
+  const double r = reach();
+  const double c = (dp_xy.squaredNorm() + dp_z * dp_z) - r * r;
   if (c <= 0) return 0.0;  // Overlapping by round-off and approaching: meet now.
-  const double a_coef = dv.dot(dv);
+  const double a_coef = dv_xy.squaredNorm() + dv_z * dv_z;
   const double disc = b_half * b_half - a_coef * c;
   if (disc < 0) return kInfinity;
   // Smaller root without cancellation: dt = C / (-B/2 + sqrt(disc)) (App. F.1).
-  const double dt = c / (-b_half + std::sqrt(disc));
+  return c / (-b_half + std::sqrt(disc));
+}
+
+/// The end of PredictLinearMeeting: a root `dt` from LinearMeetingRoot, limited to `horizon`
+/// and certified.
+inline double FinishLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb,
+                                  const Vec3& shift_b, double reach, double dt,
+                                  double horizon = kPredictionHorizon) {
   if (!(dt <= horizon)) return kInfinity;
   if (dt == 0.0) return 0.0;
   return CertifyLinearMeeting(pa, va, pb, vb, shift_b, reach, dt);
+}
+
+/// PredictMeeting for spheres of summed radius `reach` on straight lines (no acceleration, no
+/// envelope) at positions pa, pb (+ shift_b, b's periodic image offset) with velocities va, vb.
+/// Inline so that the two early exits cost a few flops. Bit-identical to PredictMeeting on the
+/// same movers.
+inline double PredictLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb,
+                                   const Vec3& shift_b, double reach,
+                                   double horizon = kPredictionHorizon) {
+  const Vec3 dp = pb + shift_b - pa;
+  const Vec3 dv = vb - va;
+  const double dt =
+      LinearMeetingRoot(dp.head<2>(), dp[2], dv.head<2>(), dv[2], [reach] { return reach; });
+  if (dt == kInfinity) return kInfinity;
+  return FinishLinearMeeting(pa, va, pb, vb, shift_b, reach, dt, horizon);
 }
 
 /// Earliest dt >= 0 at which the sphere of `a` reaches the plane n.x = d from the side n.x > d

@@ -160,6 +160,9 @@ class World::Impl {
                    VisitNeighbors&& visit);
   void ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift, Candidate& best);
   void Offer(Candidate& best, double t, std::uint32_t j) const;  // keeps the earlier meeting
+  // ScanNeighbors' rare step, out of the cell walk: certifies a root of LinearMeetingRoot.
+  [[gnu::noinline]] void OfferLinearMeeting(const PathStart& pi, std::uint32_t j, const Vec3& shift,
+                                            double reach, double dt, Candidate& best);
   template <typename VisitNeighbors>
   void ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors&& visit);
   Event FinishPrediction(std::uint32_t i, const Candidate& best, const Grid::Place* place);
