@@ -109,11 +109,12 @@ class Walk {
   }
 
   Outcome StepOnA() {
-    if (narrow::InZone(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a)) {
+    // A face against a vertex was tested by Closest already (closest_.verdict_a).
+    if (narrow::InZone(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a, closest_.verdict_a)) {
       return Outcome::kNone;
     }
-    const narrow::Moves moves =
-        narrow::ZoneMoves(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a);
+    const narrow::Moves moves = narrow::ZoneMoves(a_, tables_a_, pair_.a, closest_.p_b,
+                                                  closest_.slot_a, closest_.verdict_a);
     for (int i = 0; i < moves.count; ++i) {
       const Move& move = moves.list[static_cast<std::size_t>(i)];
       if (move.kind == Move::Kind::kBehindFace) {
@@ -134,8 +135,11 @@ class Walk {
 
   Outcome StepOnB() {
     const Eigen::Vector3d q = frame_.ToB(closest_.p_a);
-    if (narrow::InZone(b_, tables_b_, pair_.b, q, closest_.slot_b)) return Outcome::kNone;
-    const narrow::Moves moves = narrow::ZoneMoves(b_, tables_b_, pair_.b, q, closest_.slot_b);
+    if (narrow::InZone(b_, tables_b_, pair_.b, q, closest_.slot_b, closest_.verdict_b)) {
+      return Outcome::kNone;
+    }
+    const narrow::Moves moves =
+        narrow::ZoneMoves(b_, tables_b_, pair_.b, q, closest_.slot_b, closest_.verdict_b);
     for (int i = 0; i < moves.count; ++i) {
       const Move& move = moves.list[static_cast<std::size_t>(i)];
       if (move.kind == Move::Kind::kBehindFace) {

@@ -122,8 +122,20 @@ FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f, const Fa
                              const Eigen::Vector3d& q) {
   if (!IsOverFace(polyhedron, f, table, q)) return ClosestBoundaryPoint(polyhedron, f, q);
   const Plane& plane = polyhedron.face(f).plane;
-  return {q - plane.SignedDistance(q) * plane.normal, -1};
+  const double height = plane.SignedDistance(q);
+  return {q - height * plane.normal, -1, height};
 }
+
+namespace {
+
+// The zone test of face f against q decided from q's closest point on the face: as InFaceZone
+// and FaceMoves (a point on the face plane counts as in front of it).
+FaceVerdict VerdictOf(const FacePoint& c) {
+  if (c.edge_slot >= 0) return FaceVerdict::kBeside;
+  return c.height < 0.0 ? FaceVerdict::kBehind : FaceVerdict::kInZone;
+}
+
+}  // namespace
 
 SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
                                       const FaceAngleTable* table, const Eigen::Vector3d& s0,
@@ -205,6 +217,7 @@ FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
           ClosestPointOnFace(b, fb.index, FaceTable(tables_b, fb.index), frame.ToB(out.p_a));
       out.p_b = frame.ToA(c.point);
       out.slot_b = c.edge_slot;
+      out.verdict_b = VerdictOf(c);
     }
   } else if (vertex_b) {
     // A's edge or face against B's vertex (the vertex-vertex case is above).
@@ -213,6 +226,7 @@ FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
       const FacePoint c = ClosestPointOnFace(a, fa.index, FaceTable(tables_a, fa.index), out.p_b);
       out.p_a = c.point;
       out.slot_a = c.edge_slot;
+      out.verdict_a = VerdictOf(c);
     } else {
       const auto ea = Ends(a, fa);
       out.p_a = ea[0] + ClosestParameterOnSegment(ea[0], ea[1], out.p_b) * (ea[1] - ea[0]);

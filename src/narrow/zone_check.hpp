@@ -37,10 +37,12 @@ struct Moves {
 
 /// The steps out of feature `f` of `polyhedron` for the other feature's closest point q (in the
 /// polyhedron's frame); `own_slot` is the face edge slot of this feature's closest point (see
-/// FacePoint). Empty when q is in the closed zone. Tie rule: a point on a zone plane
+/// FacePoint) and `verdict` the face's zone test when already decided (see FaceVerdict; only
+/// for a face). Empty when q is in the closed zone. Tie rule: a point on a zone plane
 /// (SignedDistance == 0) is inside. `tables` may be nullptr.
 Moves ZoneMoves(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
-                FeatureId f, const Eigen::Vector3d& q, int own_slot);
+                FeatureId f, const Eigen::Vector3d& q, int own_slot,
+                FaceVerdict verdict = FaceVerdict::kUnknown);
 
 namespace zone_detail {
 inline bool InVertexZone(const ConvexPolyhedron& polyhedron,
@@ -67,7 +69,8 @@ inline bool InEdgeZone(const ConvexPolyhedron& polyhedron, int e, const Eigen::V
 }
 
 inline bool InFaceZone(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
-                       int f, const Eigen::Vector3d& q, int own_slot) {
+                       int f, const Eigen::Vector3d& q, int own_slot, FaceVerdict verdict) {
+  if (verdict != FaceVerdict::kUnknown) return verdict == FaceVerdict::kInZone;
   const FaceAngleTable* table = tables == nullptr ? nullptr : tables->face(f);
   // As FaceMoves: outside the prism with no boundary slot counts as over the face.
   if (!IsOverFace(polyhedron, f, table, q)) return own_slot < 0;
@@ -76,18 +79,19 @@ inline bool InFaceZone(const ConvexPolyhedron& polyhedron, const TrackedPolyhedr
 
 }  // namespace zone_detail
 
-/// Whether ZoneMoves(polyhedron, tables, f, q, own_slot) is empty, without building the moves:
-/// the test of almost every warm-started update, whose closest pair has not changed. Inline:
-/// it runs twice per update.
+/// Whether ZoneMoves(polyhedron, tables, f, q, own_slot, verdict) is empty, without building
+/// the moves: the test of almost every warm-started update, whose closest pair has not changed.
+/// Inline: it runs twice per update.
 inline bool InZone(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
-                   FeatureId f, const Eigen::Vector3d& q, int own_slot) {
+                   FeatureId f, const Eigen::Vector3d& q, int own_slot,
+                   FaceVerdict verdict = FaceVerdict::kUnknown) {
   switch (f.type) {
     case FeatureType::kVertex:
       return zone_detail::InVertexZone(polyhedron, tables, f.index, q);
     case FeatureType::kEdge:
       return zone_detail::InEdgeZone(polyhedron, f.index, q);
     case FeatureType::kFace:
-      return zone_detail::InFaceZone(polyhedron, tables, f.index, q, own_slot);
+      return zone_detail::InFaceZone(polyhedron, tables, f.index, q, own_slot, verdict);
     case FeatureType::kNone:
       break;
   }
