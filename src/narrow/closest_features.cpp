@@ -110,11 +110,16 @@ class Walk {
 
   Outcome StepOnA() {
     // A face against a vertex was tested by Closest already (closest_.verdict_a).
-    if (narrow::InZone(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a, closest_.verdict_a)) {
-      return Outcome::kNone;
+    const narrow::ZoneTest test =
+        narrow::TestZone(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a, closest_.verdict_a);
+    if (test.result == narrow::ZoneTest::Result::kInZone) return Outcome::kNone;
+    narrow::Moves moves;
+    if (test.result == narrow::ZoneTest::Result::kOneMove) {
+      moves.Add(test.move);
+    } else {
+      moves = narrow::ZoneMoves(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a,
+                                closest_.verdict_a);
     }
-    const narrow::Moves moves = narrow::ZoneMoves(a_, tables_a_, pair_.a, closest_.p_b,
-                                                  closest_.slot_a, closest_.verdict_a);
     for (int i = 0; i < moves.count; ++i) {
       const Move& move = moves.list[static_cast<std::size_t>(i)];
       if (move.kind == Move::Kind::kBehindFace) {
@@ -135,11 +140,15 @@ class Walk {
 
   Outcome StepOnB() {
     const Eigen::Vector3d q = frame_.ToB(closest_.p_a);
-    if (narrow::InZone(b_, tables_b_, pair_.b, q, closest_.slot_b, closest_.verdict_b)) {
-      return Outcome::kNone;
+    const narrow::ZoneTest test =
+        narrow::TestZone(b_, tables_b_, pair_.b, q, closest_.slot_b, closest_.verdict_b);
+    if (test.result == narrow::ZoneTest::Result::kInZone) return Outcome::kNone;
+    narrow::Moves moves;
+    if (test.result == narrow::ZoneTest::Result::kOneMove) {
+      moves.Add(test.move);
+    } else {
+      moves = narrow::ZoneMoves(b_, tables_b_, pair_.b, q, closest_.slot_b, closest_.verdict_b);
     }
-    const narrow::Moves moves =
-        narrow::ZoneMoves(b_, tables_b_, pair_.b, q, closest_.slot_b, closest_.verdict_b);
     for (int i = 0; i < moves.count; ++i) {
       const Move& move = moves.list[static_cast<std::size_t>(i)];
       if (move.kind == Move::Kind::kBehindFace) {

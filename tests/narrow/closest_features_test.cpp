@@ -214,7 +214,7 @@ TEST(ClosestFeatures, InZoneIsTrueExactlyWhenZoneMovesIsEmpty) {
   // shapes, with and without tables, for random points and for points put on a zone plane (the
   // tie rule: on a plane is inside).
   testing::PairGenerator generator(12);
-  int tested = 0, inside = 0;
+  int tested = 0, inside = 0, one_move = 0;
   for (const Shape& shape : generator.generic_shapes()) {
     const ConvexPolyhedron& p = *shape.polyhedron;
     const TrackedPolyhedron::Tables* tables = &shape.tracked->tables();
@@ -230,9 +230,18 @@ TEST(ClosestFeatures, InZoneIsTrueExactlyWhenZoneMovesIsEmpty) {
         for (const TrackedPolyhedron::Tables* t :
              {tables, static_cast<decltype(tables)>(nullptr)}) {
           for (const int slot : {-1, 0}) {
-            const bool empty = narrow::ZoneMoves(p, t, f, q, slot).count == 0;
+            const narrow::Moves moves = narrow::ZoneMoves(p, t, f, q, slot);
+            const bool empty = moves.count == 0;
             EXPECT_EQ(narrow::InZone(p, t, f, q, slot), empty)
                 << shape.name << " feature " << static_cast<int>(f.type) << ":" << f.index;
+            // The one-pass test's single move is the list's only move.
+            const narrow::ZoneTest test = narrow::TestZone(p, t, f, q, slot);
+            if (test.result == narrow::ZoneTest::Result::kOneMove) {
+              ASSERT_EQ(moves.count, 1);
+              EXPECT_EQ(moves.list[0].to, test.move.to);
+              EXPECT_EQ(moves.list[0].kind, test.move.kind);
+              ++one_move;
+            }
             inside += empty ? 1 : 0;
             ++tested;
           }
@@ -245,6 +254,7 @@ TEST(ClosestFeatures, InZoneIsTrueExactlyWhenZoneMovesIsEmpty) {
   }
   EXPECT_GT(tested, 10000);
   EXPECT_GT(inside, tested / 50);  // both answers occur
+  EXPECT_GT(one_move, tested / 50);
 }
 
 TEST(ClosestFeatures, AFaceVerdictIsTheFaceZoneTestOfTheVertex) {
