@@ -49,7 +49,7 @@ class Walk {
   // Walks from `start` until no zone plane is violated (or contact / containment / the cap).
   WalkEnd Run(FeaturePair start) {
     pair_ = start;
-    closest_ = Closest(pair_.a, pair_.b);
+    Closest(pair_.a, pair_.b, closest_);
     best_ = closest_.distance;
     while (true) {
       if (closest_.distance == 0.0) return WalkEnd::kContact;
@@ -71,8 +71,8 @@ class Walk {
  private:
   enum class Outcome : std::uint8_t { kNone, kMoved, kContained, kTouching };
 
-  FeatureClosest Closest(FeatureId fa, FeatureId fb) const {
-    return narrow::ClosestPointsOfFeatures(a_, tables_a_, fa, b_, tables_b_, fb, frame_);
+  void Closest(FeatureId fa, FeatureId fb, FeatureClosest& out) const {
+    narrow::ClosestPointsOfFeatures(a_, tables_a_, fa, b_, tables_b_, fb, frame_, out);
   }
 
   // The V-Clip potential, made safe for round-off: a step that raises the dimension must lower
@@ -129,7 +129,8 @@ class Walk {
         Escape({FeatureId::Face(*face), pair_.b});
         return Outcome::kMoved;
       }
-      const FeatureClosest candidate = Closest(move.to, pair_.b);
+      FeatureClosest candidate;
+      Closest(move.to, pair_.b, candidate);
       if (Accept(move.kind, candidate.distance)) {
         Take({move.to, pair_.b}, candidate);
         return Outcome::kMoved;
@@ -158,7 +159,8 @@ class Walk {
         Escape({pair_.a, FeatureId::Face(*face)});
         return Outcome::kMoved;
       }
-      const FeatureClosest candidate = Closest(pair_.a, move.to);
+      FeatureClosest candidate;
+      Closest(pair_.a, move.to, candidate);
       if (Accept(move.kind, candidate.distance)) {
         Take({pair_.a, move.to}, candidate);
         return Outcome::kMoved;
@@ -173,7 +175,7 @@ class Walk {
   // touching a tetrahedron: face -> escape -> edge -> face ... at distances of 1e-16).
   void Escape(FeaturePair pair) {
     pair_ = pair;
-    closest_ = Closest(pair.a, pair.b);
+    Closest(pair.a, pair.b, closest_);
     best_ = closest_.distance;
   }
 
@@ -185,7 +187,7 @@ class Walk {
   int max_steps_;
   double tolerance_;
   FeaturePair pair_;
-  FeatureClosest closest_;
+  FeatureClosest closest_;  // written in place by Closest: no copy of a returned answer
   double best_ = 0.0;
   int steps_ = 0;
 };

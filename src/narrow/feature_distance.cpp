@@ -199,13 +199,14 @@ SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
   return best;
 }
 
-FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
-                                       const TrackedPolyhedron::Tables* tables_a, FeatureId fa,
-                                       const ConvexPolyhedron& b,
-                                       const TrackedPolyhedron::Tables* tables_b, FeatureId fb,
-                                       const PairFrame& frame) {
+void ClosestPointsOfFeatures(const ConvexPolyhedron& a, const TrackedPolyhedron::Tables* tables_a,
+                             FeatureId fa, const ConvexPolyhedron& b,
+                             const TrackedPolyhedron::Tables* tables_b, FeatureId fb,
+                             const PairFrame& frame, FeatureClosest& out) {
   const bool face_a = fa.type == FeatureType::kFace, face_b = fb.type == FeatureType::kFace;
-  FeatureClosest out;
+  // Every branch below sets both points and the distance; the rest is per branch.
+  out.slot_a = out.slot_b = -1;
+  out.verdict_a = out.verdict_b = FaceVerdict::kUnknown;
   const bool vertex_a = fa.type == FeatureType::kVertex, vertex_b = fb.type == FeatureType::kVertex;
   if (vertex_a && (vertex_b || face_b)) {
     // A vertex of A against a vertex or a face of B: one point to transform.
@@ -278,7 +279,6 @@ FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
     out = best.value;
   }
   out.distance = (out.p_b - out.p_a).norm();
-  return out;
 }
 
 }  // namespace sparsedyn::narrow

@@ -74,11 +74,21 @@ struct FeatureClosest {
   int slot_a = -1, slot_b = -1;
   FaceVerdict verdict_a = FaceVerdict::kUnknown, verdict_b = FaceVerdict::kUnknown;
 };
-/// `tables_a` / `tables_b` may be nullptr (no J.1.1 tables).
-FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
-                                       const TrackedPolyhedron::Tables* tables_a, FeatureId fa,
-                                       const ConvexPolyhedron& b,
-                                       const TrackedPolyhedron::Tables* tables_b, FeatureId fb,
-                                       const PairFrame& frame);
+/// `tables_a` / `tables_b` may be nullptr (no J.1.1 tables). Written into `out` (every field is
+/// set): the walk computes a candidate in place instead of copying a returned answer.
+void ClosestPointsOfFeatures(const ConvexPolyhedron& a, const TrackedPolyhedron::Tables* tables_a,
+                             FeatureId fa, const ConvexPolyhedron& b,
+                             const TrackedPolyhedron::Tables* tables_b, FeatureId fb,
+                             const PairFrame& frame, FeatureClosest& out);
+/// The same, returned.
+inline FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
+                                              const TrackedPolyhedron::Tables* tables_a,
+                                              FeatureId fa, const ConvexPolyhedron& b,
+                                              const TrackedPolyhedron::Tables* tables_b,
+                                              FeatureId fb, const PairFrame& frame) {
+  FeatureClosest out;
+  ClosestPointsOfFeatures(a, tables_a, fa, b, tables_b, fb, frame, out);
+  return out;
+}
 
 }  // namespace sparsedyn::narrow
