@@ -140,6 +140,8 @@ class Walk {
   }
 
   Outcome StepOnB() {
+    // A's vertex in the zone of B's face: known without the vertex in B's frame.
+    if (closest_.verdict_b == narrow::FaceVerdict::kInZone) return Outcome::kNone;
     const Eigen::Vector3d q = frame_.ToB(closest_.p_a);
     const narrow::ZoneTest test =
         narrow::TestZone(b_, tables_b_, pair_.b, q, closest_.slot_b, closest_.verdict_b);
