@@ -49,7 +49,7 @@ class Walk {
   // Walks from `start` until no zone plane is violated (or contact / containment / the cap).
   WalkEnd Run(FeaturePair start) {
     pair_ = start;
-    closest_ = Closest(pair_.a, pair_.b);
+    Closest(pair_.a, pair_.b, closest_);
     best_ = closest_.distance;
     while (true) {
       if (closest_.distance == 0.0) return WalkEnd::kContact;
@@ -71,8 +71,8 @@ class Walk {
  private:
   enum class Outcome : std::uint8_t { kNone, kMoved, kContained, kTouching };
 
-  FeatureClosest Closest(FeatureId fa, FeatureId fb) const {
-    return narrow::ClosestPointsOfFeatures(a_, tables_a_, fa, b_, tables_b_, fb, frame_);
+  void Closest(FeatureId fa, FeatureId fb, FeatureClosest& out) const {
+    narrow::ClosestPointsOfFeatures(a_, tables_a_, fa, b_, tables_b_, fb, frame_, out);
   }
 
   // The V-Clip potential, made safe for round-off: a step that raises the dimension must lower
@@ -109,11 +109,17 @@ class Walk {
   }
 
   Outcome StepOnA() {
-    if (narrow::InZone(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a)) {
-      return Outcome::kNone;
+    // A face against a vertex was tested by Closest already (closest_.verdict_a).
+    const narrow::ZoneTest test =
+        narrow::TestZone(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a, closest_.verdict_a);
+    if (test.result == narrow::ZoneTest::Result::kInZone) return Outcome::kNone;
+    narrow::Moves moves;
+    if (test.result == narrow::ZoneTest::Result::kOneMove) {
+      moves.Add(test.move);
+    } else {
+      moves = narrow::ZoneMoves(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a,
+                                closest_.verdict_a);
     }
-    const narrow::Moves moves =
-        narrow::ZoneMoves(a_, tables_a_, pair_.a, closest_.p_b, closest_.slot_a);
     for (int i = 0; i < moves.count; ++i) {
       const Move& move = moves.list[static_cast<std::size_t>(i)];
       if (move.kind == Move::Kind::kBehindFace) {
@@ -123,7 +129,8 @@ class Walk {
         Escape({FeatureId::Face(*face), pair_.b});
         return Outcome::kMoved;
       }
-      const FeatureClosest candidate = Closest(move.to, pair_.b);
+      FeatureClosest candidate;
+      Closest(move.to, pair_.b, candidate);
       if (Accept(move.kind, candidate.distance)) {
         Take({move.to, pair_.b}, candidate);
         return Outcome::kMoved;
@@ -133,9 +140,18 @@ class Walk {
   }
 
   Outcome StepOnB() {
+    // A's vertex in the zone of B's face: known without the vertex in B's frame.
+    if (closest_.verdict_b == narrow::FaceVerdict::kInZone) return Outcome::kNone;
     const Eigen::Vector3d q = frame_.ToB(closest_.p_a);
-    if (narrow::InZone(b_, tables_b_, pair_.b, q, closest_.slot_b)) return Outcome::kNone;
-    const narrow::Moves moves = narrow::ZoneMoves(b_, tables_b_, pair_.b, q, closest_.slot_b);
+    const narrow::ZoneTest test =
+        narrow::TestZone(b_, tables_b_, pair_.b, q, closest_.slot_b, closest_.verdict_b);
+    if (test.result == narrow::ZoneTest::Result::kInZone) return Outcome::kNone;
+    narrow::Moves moves;
+    if (test.result == narrow::ZoneTest::Result::kOneMove) {
+      moves.Add(test.move);
+    } else {
+      moves = narrow::ZoneMoves(b_, tables_b_, pair_.b, q, closest_.slot_b, closest_.verdict_b);
+    }
     for (int i = 0; i < moves.count; ++i) {
       const Move& move = moves.list[static_cast<std::size_t>(i)];
       if (move.kind == Move::Kind::kBehindFace) {
@@ -145,7 +161,8 @@ class Walk {
         Escape({pair_.a, FeatureId::Face(*face)});
         return Outcome::kMoved;
       }
-      const FeatureClosest candidate = Closest(pair_.a, move.to);
+      FeatureClosest candidate;
+      Closest(pair_.a, move.to, candidate);
       if (Accept(move.kind, candidate.distance)) {
         Take({pair_.a, move.to}, candidate);
         return Outcome::kMoved;
@@ -160,7 +177,7 @@ class Walk {
   // touching a tetrahedron: face -> escape -> edge -> face ... at distances of 1e-16).
   void Escape(FeaturePair pair) {
     pair_ = pair;
-    closest_ = Closest(pair.a, pair.b);
+    Closest(pair.a, pair.b, closest_);
     best_ = closest_.distance;
   }
 
@@ -172,7 +189,7 @@ class Walk {
   int max_steps_;
   double tolerance_;
   FeaturePair pair_;
-  FeatureClosest closest_;
+  FeatureClosest closest_;  // written in place by Closest: no copy of a returned answer
   double best_ = 0.0;
   int steps_ = 0;
 };

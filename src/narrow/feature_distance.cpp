@@ -122,8 +122,20 @@ FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f, const Fa
                              const Eigen::Vector3d& q) {
   if (!IsOverFace(polyhedron, f, table, q)) return ClosestBoundaryPoint(polyhedron, f, q);
   const Plane& plane = polyhedron.face(f).plane;
-  return {q - plane.SignedDistance(q) * plane.normal, -1};
+  const double height = plane.SignedDistance(q);
+  return {q - height * plane.normal, -1, height};
 }
+
+namespace {
+
+// The zone test of face f against q decided from q's closest point on the face: as InFaceZone
+// and FaceMoves (a point on the face plane counts as in front of it).
+FaceVerdict VerdictOf(const FacePoint& c) {
+  if (c.edge_slot >= 0) return FaceVerdict::kBeside;
+  return c.height < 0.0 ? FaceVerdict::kBehind : FaceVerdict::kInZone;
+}
+
+}  // namespace
 
 SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
                                       const FaceAngleTable* table, const Eigen::Vector3d& s0,
@@ -187,13 +199,14 @@ SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
   return best;
 }
 
-FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
-                                       const TrackedPolyhedron::Tables* tables_a, FeatureId fa,
-                                       const ConvexPolyhedron& b,
-                                       const TrackedPolyhedron::Tables* tables_b, FeatureId fb,
-                                       const PairFrame& frame) {
+void ClosestPointsOfFeatures(const ConvexPolyhedron& a, const TrackedPolyhedron::Tables* tables_a,
+                             FeatureId fa, const ConvexPolyhedron& b,
+                             const TrackedPolyhedron::Tables* tables_b, FeatureId fb,
+                             const PairFrame& frame, FeatureClosest& out) {
   const bool face_a = fa.type == FeatureType::kFace, face_b = fb.type == FeatureType::kFace;
-  FeatureClosest out;
+  // Every branch below sets both points and the distance; the rest is per branch.
+  out.slot_a = out.slot_b = -1;
+  out.verdict_a = out.verdict_b = FaceVerdict::kUnknown;
   const bool vertex_a = fa.type == FeatureType::kVertex, vertex_b = fb.type == FeatureType::kVertex;
   if (vertex_a && (vertex_b || face_b)) {
     // A vertex of A against a vertex or a face of B: one point to transform.
@@ -205,6 +218,7 @@ FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
           ClosestPointOnFace(b, fb.index, FaceTable(tables_b, fb.index), frame.ToB(out.p_a));
       out.p_b = frame.ToA(c.point);
       out.slot_b = c.edge_slot;
+      out.verdict_b = VerdictOf(c);
     }
   } else if (vertex_b) {
     // A's edge or face against B's vertex (the vertex-vertex case is above).
@@ -213,6 +227,7 @@ FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
       const FacePoint c = ClosestPointOnFace(a, fa.index, FaceTable(tables_a, fa.index), out.p_b);
       out.p_a = c.point;
       out.slot_a = c.edge_slot;
+      out.verdict_a = VerdictOf(c);
     } else {
       const auto ea = Ends(a, fa);
       out.p_a = ea[0] + ClosestParameterOnSegment(ea[0], ea[1], out.p_b) * (ea[1] - ea[0]);
@@ -264,7 +279,6 @@ FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
     out = best.value;
   }
   out.distance = (out.p_b - out.p_a).norm();
-  return out;
 }
 
 }  // namespace sparsedyn::narrow

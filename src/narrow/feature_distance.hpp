@@ -39,10 +39,12 @@ inline bool IsOverFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngl
 }
 
 /// Closest point of face f's polygon to q (polyhedron frame). edge_slot is the position in
-/// FaceEdges(f) of the boundary edge the point lies on, or -1 when it is inside the polygon.
+/// FaceEdges(f) of the boundary edge the point lies on, or -1 when it is inside the polygon;
+/// then height is q's signed distance from the face plane.
 struct FacePoint {
   Eigen::Vector3d point;
   int edge_slot = -1;
+  double height = 0.0;
 };
 FacePoint ClosestPointOnFace(const ConvexPolyhedron& polyhedron, int f, const FaceAngleTable* table,
                              const Eigen::Vector3d& q);
@@ -57,18 +59,36 @@ SegmentFaceClosest ClosestSegmentFace(const ConvexPolyhedron& polyhedron, int f,
                                       const FaceAngleTable* table, const Eigen::Vector3d& s0,
                                       const Eigen::Vector3d& s1);
 
+/// A face's zone test against the other feature's closest point, when that feature is a vertex:
+/// finding the vertex's closest point on the face has already decided it (the same point against
+/// the same planes), so the walk need not test again. kBeside: outside a side plane, the walk
+/// steps to the boundary edge of the face's edge slot; kBehind: over the face, behind its plane.
+enum class FaceVerdict : std::uint8_t { kUnknown, kInZone, kBeside, kBehind };
+
 /// Closest points of feature fa of A and fb of B, both in A's frame, with the face edge slots
-/// (see FacePoint) of the two points when their feature is a face.
+/// (see FacePoint) of the two points when their feature is a face, and the face's verdict when
+/// the other feature is a vertex.
 struct FeatureClosest {
   Eigen::Vector3d p_a = Eigen::Vector3d::Zero(), p_b = Eigen::Vector3d::Zero();
   double distance = 0.0;
   int slot_a = -1, slot_b = -1;
+  FaceVerdict verdict_a = FaceVerdict::kUnknown, verdict_b = FaceVerdict::kUnknown;
 };
-/// `tables_a` / `tables_b` may be nullptr (no J.1.1 tables).
-FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
-                                       const TrackedPolyhedron::Tables* tables_a, FeatureId fa,
-                                       const ConvexPolyhedron& b,
-                                       const TrackedPolyhedron::Tables* tables_b, FeatureId fb,
-                                       const PairFrame& frame);
+/// `tables_a` / `tables_b` may be nullptr (no J.1.1 tables). Written into `out` (every field is
+/// set): the walk computes a candidate in place instead of copying a returned answer.
+void ClosestPointsOfFeatures(const ConvexPolyhedron& a, const TrackedPolyhedron::Tables* tables_a,
+                             FeatureId fa, const ConvexPolyhedron& b,
+                             const TrackedPolyhedron::Tables* tables_b, FeatureId fb,
+                             const PairFrame& frame, FeatureClosest& out);
+/// The same, returned.
+inline FeatureClosest ClosestPointsOfFeatures(const ConvexPolyhedron& a,
+                                              const TrackedPolyhedron::Tables* tables_a,
+                                              FeatureId fa, const ConvexPolyhedron& b,
+                                              const TrackedPolyhedron::Tables* tables_b,
+                                              FeatureId fb, const PairFrame& frame) {
+  FeatureClosest out;
+  ClosestPointsOfFeatures(a, tables_a, fa, b, tables_b, fb, frame, out);
+  return out;
+}
 
 }  // namespace sparsedyn::narrow

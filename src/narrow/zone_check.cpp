@@ -72,10 +72,12 @@ Moves EdgeMoves(const ConvexPolyhedron& polyhedron, int e, const Eigen::Vector3d
 // Face zone: outside a side plane, step to the boundary edge that holds the face's closest point
 // (a lower step); over the face but behind its plane, report it (the walk resolves it).
 Moves FaceMoves(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables, int f,
-                const Eigen::Vector3d& q, int own_slot) {
+                const Eigen::Vector3d& q, int own_slot, FaceVerdict verdict) {
   Moves moves;
   const FaceAngleTable* table = tables == nullptr ? nullptr : tables->face(f);
-  if (!IsOverFace(polyhedron, f, table, q)) {
+  const bool over = verdict != FaceVerdict::kUnknown ? verdict != FaceVerdict::kBeside
+                                                     : IsOverFace(polyhedron, f, table, q);
+  if (!over) {
     // The closest point of the polygon is on its boundary, on edge own_slot. (own_slot < 0 only
     // when round-off put the point a hair outside: then it counts as over the face.)
     if (own_slot >= 0) {
@@ -84,7 +86,10 @@ Moves FaceMoves(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tab
     }
     return moves;
   }
-  if (polyhedron.face(f).plane.SignedDistance(q) < 0.0) {
+  const bool behind = verdict != FaceVerdict::kUnknown
+                          ? verdict == FaceVerdict::kBehind
+                          : polyhedron.face(f).plane.SignedDistance(q) < 0.0;
+  if (behind) {
     moves.Add({FeatureId::Face(f), Move::Kind::kBehindFace});
   }
   return moves;
@@ -93,14 +98,14 @@ Moves FaceMoves(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tab
 }  // namespace
 
 Moves ZoneMoves(const ConvexPolyhedron& polyhedron, const TrackedPolyhedron::Tables* tables,
-                FeatureId f, const Eigen::Vector3d& q, int own_slot) {
+                FeatureId f, const Eigen::Vector3d& q, int own_slot, FaceVerdict verdict) {
   switch (f.type) {
     case FeatureType::kVertex:
       return VertexMoves(polyhedron, tables, f.index, q);
     case FeatureType::kEdge:
       return EdgeMoves(polyhedron, f.index, q);
     case FeatureType::kFace:
-      return FaceMoves(polyhedron, tables, f.index, q, own_slot);
+      return FaceMoves(polyhedron, tables, f.index, q, own_slot, verdict);
     case FeatureType::kNone:
       break;
   }

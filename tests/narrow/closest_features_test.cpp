@@ -214,7 +214,7 @@ TEST(ClosestFeatures, InZoneIsTrueExactlyWhenZoneMovesIsEmpty) {
   // shapes, with and without tables, for random points and for points put on a zone plane (the
   // tie rule: on a plane is inside).
   testing::PairGenerator generator(12);
-  int tested = 0, inside = 0;
+  int tested = 0, inside = 0, one_move = 0;
   for (const Shape& shape : generator.generic_shapes()) {
     const ConvexPolyhedron& p = *shape.polyhedron;
     const TrackedPolyhedron::Tables* tables = &shape.tracked->tables();
@@ -230,9 +230,18 @@ TEST(ClosestFeatures, InZoneIsTrueExactlyWhenZoneMovesIsEmpty) {
         for (const TrackedPolyhedron::Tables* t :
              {tables, static_cast<decltype(tables)>(nullptr)}) {
           for (const int slot : {-1, 0}) {
-            const bool empty = narrow::ZoneMoves(p, t, f, q, slot).count == 0;
+            const narrow::Moves moves = narrow::ZoneMoves(p, t, f, q, slot);
+            const bool empty = moves.count == 0;
             EXPECT_EQ(narrow::InZone(p, t, f, q, slot), empty)
                 << shape.name << " feature " << static_cast<int>(f.type) << ":" << f.index;
+            // The one-pass test's single move is the list's only move.
+            const narrow::ZoneTest test = narrow::TestZone(p, t, f, q, slot);
+            if (test.result == narrow::ZoneTest::Result::kOneMove) {
+              ASSERT_EQ(moves.count, 1);
+              EXPECT_EQ(moves.list[0].to, test.move.to);
+              EXPECT_EQ(moves.list[0].kind, test.move.kind);
+              ++one_move;
+            }
             inside += empty ? 1 : 0;
             ++tested;
           }
@@ -245,6 +254,72 @@ TEST(ClosestFeatures, InZoneIsTrueExactlyWhenZoneMovesIsEmpty) {
   }
   EXPECT_GT(tested, 10000);
   EXPECT_GT(inside, tested / 50);  // both answers occur
+  EXPECT_GT(one_move, tested / 50);
+}
+
+TEST(ClosestFeatures, AFaceVerdictIsTheFaceZoneTestOfTheVertex) {
+  // A vertex against a face: the verdict ClosestPointsOfFeatures records must be what the zone
+  // test of the face against the vertex says (InZone and ZoneMoves without it), on both sides,
+  // on random placements (about half of them overlapping, so behind-the-face occurs too). Any
+  // other pair of feature types has no verdict.
+  testing::PairGenerator generator(20261125);
+  int tested = 0;
+  int seen[4] = {0, 0, 0, 0};
+  for (int trial = 0; trial < 300; ++trial) {
+    const testing::PlacedPair pair = generator.Next();
+    SCOPED_TRACE(pair.Describe());
+    const ConvexPolyhedron& a = *pair.a->polyhedron;
+    const ConvexPolyhedron& b = *pair.b->polyhedron;
+    const TrackedPolyhedron::Tables* tables_a = &pair.a->tracked->tables();
+    const TrackedPolyhedron::Tables* tables_b = &pair.b->tracked->tables();
+    const narrow::PairFrame frame(pair.X_WA, pair.X_WB);
+    auto expect_same_moves = [](const narrow::Moves& x, const narrow::Moves& y) {
+      ASSERT_EQ(x.count, y.count);
+      for (std::size_t i = 0; i < static_cast<std::size_t>(x.count); ++i) {
+        EXPECT_EQ(x.list[i].to, y.list[i].to);
+        EXPECT_EQ(x.list[i].kind, y.list[i].kind);
+      }
+    };
+    for (int v = 0; v < std::min(a.vertex_count(), 12); ++v) {
+      for (int f = 0; f < std::min(b.face_count(), 12); ++f) {
+        // A's vertex against B's face: B's zone test, in B's frame.
+        const narrow::FeatureClosest c = narrow::ClosestPointsOfFeatures(
+            a, tables_a, FeatureId::Vertex(v), b, tables_b, FeatureId::Face(f), frame);
+        EXPECT_EQ(c.verdict_a, narrow::FaceVerdict::kUnknown);
+        ASSERT_NE(c.verdict_b, narrow::FaceVerdict::kUnknown);
+        const Eigen::Vector3d q = frame.ToB(c.p_a);
+        EXPECT_EQ(narrow::InZone(b, tables_b, FeatureId::Face(f), q, c.slot_b),
+                  c.verdict_b == narrow::FaceVerdict::kInZone);
+        expect_same_moves(
+            narrow::ZoneMoves(b, tables_b, FeatureId::Face(f), q, c.slot_b, c.verdict_b),
+            narrow::ZoneMoves(b, tables_b, FeatureId::Face(f), q, c.slot_b));
+        ++seen[static_cast<int>(c.verdict_b)];
+        // The roles swapped (the face's polyhedron first): the first one's zone test.
+        const narrow::PairFrame swapped(pair.X_WB, pair.X_WA);
+        const narrow::FeatureClosest e = narrow::ClosestPointsOfFeatures(
+            b, tables_b, FeatureId::Face(f), a, tables_a, FeatureId::Vertex(v), swapped);
+        EXPECT_EQ(e.verdict_b, narrow::FaceVerdict::kUnknown);
+        ASSERT_NE(e.verdict_a, narrow::FaceVerdict::kUnknown);
+        EXPECT_EQ(narrow::InZone(b, tables_b, FeatureId::Face(f), e.p_b, e.slot_a),
+                  e.verdict_a == narrow::FaceVerdict::kInZone);
+        expect_same_moves(
+            narrow::ZoneMoves(b, tables_b, FeatureId::Face(f), e.p_b, e.slot_a, e.verdict_a),
+            narrow::ZoneMoves(b, tables_b, FeatureId::Face(f), e.p_b, e.slot_a));
+        ++seen[static_cast<int>(e.verdict_a)];
+        tested += 2;
+      }
+    }
+    // No verdict without a vertex-face pair.
+    const narrow::FeatureClosest ee = narrow::ClosestPointsOfFeatures(
+        a, tables_a, FeatureId::Edge(0), b, tables_b, FeatureId::Face(0), frame);
+    EXPECT_EQ(ee.verdict_a, narrow::FaceVerdict::kUnknown);
+    EXPECT_EQ(ee.verdict_b, narrow::FaceVerdict::kUnknown);
+  }
+  EXPECT_GT(tested, 10000);
+  // Every verdict occurs.
+  EXPECT_GT(seen[static_cast<int>(narrow::FaceVerdict::kInZone)], 100);
+  EXPECT_GT(seen[static_cast<int>(narrow::FaceVerdict::kBeside)], 100);
+  EXPECT_GT(seen[static_cast<int>(narrow::FaceVerdict::kBehind)], 100);
 }
 
 TEST(ClosestFeatures, AngleAndDirectionTablesGiveThePlainWalksAnswers) {
