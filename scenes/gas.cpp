@@ -2,7 +2,10 @@
 #include "scenes/gas.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <string>
 
@@ -16,23 +19,38 @@ constexpr double kRandomPlacementMaxPacking = 0.25;
 // Placement attempts per sphere before random placement gives up for the lattice start.
 constexpr int kAttemptsPerSphere = 200;
 
-// Random sequential placement with a periodic cell list of cells >= one diameter.
+// Random sequential placement with a periodic cell list: cells at least two diameters wide, so
+// that the cells meeting the box of half-width one diameter around a point (2 per axis, rarely
+// 3) hold every sphere it could overlap, and at most ~2n of them, so that a dilute gas does not
+// allocate a cell per diameter cubed of its box. Each cell is the head of a list threaded
+// through `next` (no allocation per cell).
 bool PlaceAtRandom(const GasOptions& o, double side, Random& random, std::vector<Vec3>& out) {
   const double diameter = 2 * o.radius;
-  const int cells = std::max(1, static_cast<int>(side / diameter));
+  const int most = std::max(1, static_cast<int>(std::cbrt(2.0 * static_cast<double>(o.n))));
+  const int cells = std::clamp(static_cast<int>(side / (2 * diameter)), 1, most);
   const double cell = side / cells;
-  std::vector<std::vector<std::uint32_t>> grid(static_cast<std::size_t>(cells) * cells * cells);
-  auto index = [cells](int x, int y, int z) {
-    auto wrap = [cells](int v) { return ((v % cells) + cells) % cells; };
+  constexpr std::uint32_t kEnd = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> head(static_cast<std::size_t>(cells) * cells * cells, kEnd);
+  std::vector<std::uint32_t> next;
+  next.reserve(o.n);
+  auto wrap = [cells](int v) { return ((v % cells) + cells) % cells; };
+  auto index = [&](int x, int y, int z) {
     return (static_cast<std::size_t>(wrap(z)) * cells + wrap(y)) * cells + wrap(x);
   };
+  // Cell coordinates of the box [p - reach, p + reach], widened past round-off; at most `cells`
+  // per axis so that no cell is visited twice.
+  const double reach = diameter + 1e-9 * cell;
+  auto span = [&](double x, int& first, int& count) {
+    first = static_cast<int>(std::floor((x - reach) / cell));
+    count = std::min(cells, static_cast<int>(std::floor((x + reach) / cell)) - first + 1);
+  };
   auto free_at = [&](const Vec3& p) {
-    const int cx = static_cast<int>(p[0] / cell), cy = static_cast<int>(p[1] / cell),
-              cz = static_cast<int>(p[2] / cell);
-    for (int dz = -1; dz <= 1; ++dz) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          for (const std::uint32_t j : grid[index(cx + dx, cy + dy, cz + dz)]) {
+    std::array<int, 3> first{}, count{};
+    for (int k = 0; k < 3; ++k) span(p[k], first[k], count[k]);
+    for (int z = first[2]; z < first[2] + count[2]; ++z) {
+      for (int y = first[1]; y < first[1] + count[1]; ++y) {
+        for (int x = first[0]; x < first[0] + count[0]; ++x) {
+          for (std::uint32_t j = head[index(x, y, z)]; j != kEnd; j = next[j]) {
             Vec3 d = out[j] - p;
             if (o.periodic) {
               for (int k = 0; k < 3; ++k) d[k] -= side * std::round(d[k] / side);
@@ -54,7 +72,9 @@ bool PlaceAtRandom(const GasOptions& o, double side, Random& random, std::vector
     if (!free_at(p)) continue;
     const int cx = static_cast<int>(p[0] / cell), cy = static_cast<int>(p[1] / cell),
               cz = static_cast<int>(p[2] / cell);
-    grid[index(cx, cy, cz)].push_back(static_cast<std::uint32_t>(out.size()));
+    std::uint32_t& first = head[index(cx, cy, cz)];
+    next.push_back(first);
+    first = static_cast<std::uint32_t>(out.size());
     out.push_back(p);
   }
   return true;
