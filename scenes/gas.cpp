@@ -27,7 +27,8 @@ constexpr int kAttemptsPerSphere = 200;
 bool PlaceAtRandom(const GasOptions& o, double side, Random& random, std::vector<Vec3>& out) {
   const double diameter = 2 * o.radius;
   const int most = std::max(1, static_cast<int>(std::cbrt(2.0 * static_cast<double>(o.n))));
-  const int cells = std::clamp(static_cast<int>(side / (2 * diameter)), 1, most);
+  const int cells = static_cast<int>(
+      std::clamp(std::floor(side / (2 * diameter)), 1.0, static_cast<double>(most)));
   const double cell = side / cells;
   constexpr std::uint32_t kEnd = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> head(static_cast<std::size_t>(cells) * cells * cells, kEnd);
