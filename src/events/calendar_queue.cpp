@@ -168,16 +168,25 @@ void CalendarQueue::Refill() {
     }
     SetCurrent(b);
 
-    // The next refill's first entry, fetched while this bucket's few entries are handled: a
+    // The next refills' entries, fetched while this bucket's few entries are handled: a
     // bucket's list is threaded through the slot array in no order of memory, so once the
-    // array outgrows the caches each step of that walk is a cache miss. Not for small arrays,
-    // where the look-ahead costs instructions and saves nothing.
+    // array outgrows the caches each step of that walk is a cache miss. Two deep: the first
+    // entry of the second non-empty bucket ahead, and the second entry of the next one (whose
+    // first entry the previous refill fetched, so reading its link does not wait). Not for
+    // small arrays, where the look-ahead costs instructions and saves nothing.
     if (prefetch_) {
-      for (std::uint32_t ahead = b + 1; ahead < count && ahead <= b + 4; ++ahead) {
-        if (heads_[ahead] != kNoIndex) {
-          __builtin_prefetch(&entries_[heads_[ahead]]);
-          break;
+      bool first = true;
+      for (std::uint32_t ahead = b + 1; ahead < count && ahead <= b + 8; ++ahead) {
+        const std::uint32_t head = heads_[ahead];
+        if (head == kNoIndex) continue;
+        if (first) {
+          const std::uint32_t second = entries_[head].next;
+          if (second != kNoIndex) __builtin_prefetch(&entries_[second]);
+          first = false;
+          continue;
         }
+        __builtin_prefetch(&entries_[head]);
+        break;
       }
     }
 
