@@ -172,6 +172,7 @@ class CalendarQueue {
   double first_pop_time_ = 0.0;  // of the pops counted in pops_
   double last_pop_time_ = 0.0;
   std::uint64_t rebuilds_ = 0;
+  bool prefetch_ = false;  // the slot array outgrew the caches: Refill fetches ahead
 };
 
 }  // namespace sparsedyn

@@ -169,6 +169,30 @@ TYPED_TEST(QueueOracle, AgreesWithReferenceOnHoldModel) {
   }
 }
 
+// The World's hold: the head's slot is moved to a later time without a Pop. The slots in use
+// are every `stride`-th of the slot array: dense (stride 1), with absent slots between them
+// (3 of 4 in use) and sparse (1 in 7), so that the calendar queue's year ends both stream the
+// slot array (entries fill at least half of it) and walk the overflow list (they do not).
+TYPED_TEST(QueueOracle, AgreesWithReferenceOnHoldInPlaceWithAbsentSlots) {
+  for (const std::uint32_t stride : {1u, 4u, 7u}) {
+    const std::uint64_t seed = 77 + stride;
+    SCOPED_TRACE("seed=" + std::to_string(seed) + " stride=" + std::to_string(stride));
+    KeySource keys(seed);
+    Twin<TypeParam> twin;
+    constexpr std::uint32_t kSlots = 5000;
+    for (std::uint32_t slot = 0; slot < kSlots; ++slot) {
+      // Stride 4 keeps three slots of four: the fourth stays absent.
+      const bool used = stride == 4 ? slot % 4 != 3 : slot % stride == 0;
+      if (used) twin.Set(slot, keys.Exponential(1.0), keys.Kind());
+    }
+    for (int hold = 0; hold < 40000; ++hold) {
+      const QueueTop top = twin.reference.Top();
+      twin.Set(top.slot, KeySource::Quantised(top.time + keys.Exponential(1.0)), top.kind);
+      ASSERT_TRUE(twin.Agrees(top.slot)) << "hold " << hold;
+    }
+  }
+}
+
 // The World's pattern: each event re-predicts its own slot and a few others, always at or
 // after the current time, with an event spacing that drifts over twelve orders of magnitude
 // (the calendar queue must re-adapt its width both ways).
