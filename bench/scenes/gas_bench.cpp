@@ -108,7 +108,7 @@ BENCHMARK(BM_Gas)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_GasCells)
-    ->ArgsProduct({{10000, 100000}, {5, 30}, {5, 10, 20, 40, 80}})
+    ->ArgsProduct({{10000, 100000}, {5, 30}, {5, 10, 20, 40, 60, 80, 120, 160}})
     ->ArgNames({"n", "packing%", "cells_per_body_x10"})
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond)
