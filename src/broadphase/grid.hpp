@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "broadphase/cell_crossing.hpp"
+#include "math/branchless.hpp"
 #include "sparse/mover.hpp"
 #include "sparsedyn/types.hpp"
 
@@ -54,23 +55,27 @@ class Grid {
   Place PlaceOf(std::uint32_t e) const { return {cell_of_[e], Coordinates(cell_of_[e])}; }
 
   /// PredictCrossing for a centre on a straight line (p0 + v dt, no acceleration): the same
-  /// answer with a division per axis instead of the general quadratic.
+  /// answer with a division per axis instead of the general quadratic. Without branches on the
+  /// data: which axis comes first is a coin toss for the branch predictor, and the crossing is
+  /// predicted after every event of a gas.
   double PredictLinearCrossing(const Vec3& p0, const Vec3& v, const Place& place, double min_dt,
                                int& axis, int& direction) const {
     double best = kInfinity;
-    axis = 0;
-    direction = 1;
+    int best_axis = 0, best_direction = 1;
     for (int k = 0; k < 3; ++k) {
-      if (!(v[k] > 0 || v[k] < 0)) continue;  // at rest along k (or NaN): never leaves
-      const int dir = v[k] > 0 ? 1 : -1;
-      const int face = place.at[k] + (dir > 0 ? 1 : 0);  // the face's index along k
-      const double dt = std::max(min_dt, (faces_[k][face] - p0[k]) / v[k]);
-      if (dt < best) {
-        best = dt;
-        axis = k;
-        direction = dir;
-      }
+      const bool up = v[k] > 0;
+      const bool moving = up | (v[k] < 0);  // at rest along k (or NaN): never leaves
+      const double face = faces_[k][static_cast<std::size_t>(place.at[k] + (up ? 1 : 0))];
+      const double exit = MaxOf(min_dt, (face - p0[k]) / v[k]);
+      const double dt = Select(moving, exit, kInfinity);
+      // Ties go to the lower axis. The integer selects as masks: GCC branches on them too.
+      const int earlier = -static_cast<int>(dt < best);
+      best = MinOf(dt, best);
+      best_axis ^= (best_axis ^ k) & earlier;
+      best_direction ^= (best_direction ^ (up ? 1 : -1)) & earlier;
     }
+    axis = best_axis;
+    direction = best_direction;
     return best;
   }
 
@@ -123,6 +128,30 @@ class Grid {
       }
     }
     VisitBlock(e, spans[0], spans[1], spans[2], fn);
+  }
+
+  /// Whether the cell at `place` is off the grid's outer layer: its 27 neighbours are then in
+  /// the grid, unwrapped (no image shift), at fixed index offsets, and the Gather functions
+  /// below apply.
+  bool Interior(const Place& place) const {
+    return place.at[0] > 0 && place.at[0] < n_[0] - 1 && place.at[1] > 0 &&
+           place.at[1] < n_[1] - 1 && place.at[2] > 0 && place.at[2] < n_[2] - 1;
+  }
+
+  /// For an interior `place`: writes the elements of the 27 cells around it, the cell's own
+  /// elements included, to `out` from index 0 on (growing it when needed) and returns how many.
+  /// What ForEachNeighbor visits, plus the cell's owner, in another order and without a branch
+  /// on which cells are empty or how long their lists are: in a gas most cells hold zero or one
+  /// element, and a walk that branches on that is mispredicted at every few cells.
+  std::uint32_t GatherAround(const Place& place, std::vector<std::uint32_t>& out) const {
+    return Gather<27>(place.cell, around_cells_.data(), out);
+  }
+
+  /// For an interior `place` entered across (axis, direction): the elements of the 9 cells that
+  /// became adjacent, as GatherAround writes them (what ForEachNewNeighbor visits).
+  std::uint32_t GatherNew(const Place& place, int axis, int direction,
+                          std::vector<std::uint32_t>& out) const {
+    return Gather<9>(place.cell, new_single_cells_[axis * 2 + (direction > 0 ? 1 : 0)].data(), out);
   }
 
   /// The elements renumbered: element `old_of_new[e]` becomes element e, keeping its cell.
@@ -187,12 +216,33 @@ class Grid {
     }
     for (int d = -1; d <= 1; ++d) Single(axis, at + d, span);
   }
-  // Not on the outer layer of cells: the 27 cells around are in the grid, unwrapped, at fixed
-  // index offsets (around_rows_, new_cells_).
-  bool Interior(const Place& place) const {
-    return place.at[0] > 0 && place.at[0] < n_[0] - 1 && place.at[1] > 0 &&
-           place.at[1] < n_[1] - 1 && place.at[2] > 0 && place.at[2] < n_[2] - 1;
+  // The cells cell + offsets[c] (c < count): their heads first, each written and counted only
+  // if not empty (a select, not a branch), then every list followed by appending each gathered
+  // element's successor in the same way. `out` grows when a list is long (rarely: it starts
+  // with room for a few hundred).
+  template <int kCount>
+  std::uint32_t Gather(std::uint32_t cell, const std::int32_t* offsets,
+                       std::vector<std::uint32_t>& out) const {
+    if (out.size() < kGatherMinimum) out.resize(kGatherMinimum);
+    std::uint32_t* buffer = out.data();
+    std::uint32_t n = 0;
+    for (int c = 0; c < kCount; ++c) {
+      const std::uint32_t h = head_[cell + static_cast<std::uint32_t>(offsets[c])];
+      buffer[n] = h;
+      n += h != kNoIndex ? 1u : 0u;
+    }
+    for (std::uint32_t k = 0; k < n; ++k) {
+      if (n + 1 >= out.size()) {
+        out.resize(2 * out.size());
+        buffer = out.data();
+      }
+      const std::uint32_t next = next_[buffer[k]];
+      buffer[n] = next;
+      n += next != kNoIndex ? 1u : 0u;
+    }
+    return n;
   }
+  static constexpr std::size_t kGatherMinimum = 256;
   // Rows of three cells along x starting at cell + offsets[r]; cells + offsets[r] one by one.
   // Indices wrap as unsigned numbers: cell + offset stays inside the grid for an interior cell.
   template <typename Fn>
@@ -262,6 +312,10 @@ class Grid {
   // direction > 0)) the 9 cells that became adjacent: 9 single cells for axis x, else 3 rows.
   std::array<std::int32_t, 9> around_rows_{};
   std::array<std::array<std::int32_t, 9>, 6> new_cells_{};
+  // The same cells one by one, for Gather: the 27 around a cell and the 9 new ones of each
+  // crossing.
+  std::array<std::int32_t, 27> around_cells_{};
+  std::array<std::array<std::int32_t, 9>, 6> new_single_cells_{};
   bool periodic_ = false;
   std::vector<std::uint32_t> head_;  // first element of each cell
   std::vector<std::uint32_t> next_;  // intrusive doubly linked lists of each cell

@@ -130,6 +130,8 @@ class World::Impl {
   double max_radius_ = 0.0;
   std::optional<Grid> grid_;
   std::optional<AllPairs> all_pairs_;
+  std::vector<std::uint32_t> gathered_;  // Grid::Gather's output, reused by every prediction
+  std::vector<double> hit_dt_;           // TestGathered's meeting roots, as long as gathered_
   CalendarQueue queue_;             // one slot per element
   CalendarQueue engagement_queue_;  // one slot per engagement
   Engagements engagements_;
@@ -153,11 +155,10 @@ class World::Impl {
   void PredictFull(std::uint32_t i);
   /// After i crossed into the grid cell at `place` across (axis, direction).
   void PredictAfterCrossing(std::uint32_t i, const Grid::Place& place, int axis, int direction);
-  /// Scans what `visit` visits from `best` on, adds walls and the cell crossing (i's cell at
-  /// `place`, null without a grid) and schedules the earliest.
-  template <typename VisitNeighbors>
-  void PredictWith(std::uint32_t i, Candidate best, const Grid::Place* place,
-                   VisitNeighbors&& visit);
+  /// Lets `scan(best)` look for meetings earlier than `best`, adds walls and the cell crossing
+  /// (i's cell at `place`, null without a grid) and schedules the earliest.
+  template <typename Scan>
+  void PredictWith(std::uint32_t i, Candidate best, const Grid::Place* place, Scan&& scan);
   void ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift, Candidate& best);
   void Offer(Candidate& best, double t, std::uint32_t j) const;  // keeps the earlier meeting
   // ScanNeighbors' rare step, out of the cell walk: certifies a root of LinearMeetingRoot.
@@ -165,7 +166,11 @@ class World::Impl {
                                             double reach, double dt, Candidate& best);
   template <typename VisitNeighbors>
   void ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors&& visit);
+  /// ScanNeighbors for straight lines over gathered_[0 .. count) (interior grid cells: no
+  /// image shift), without branches on the data until a pair meets.
+  void TestGathered(std::uint32_t i, std::uint32_t count, Candidate& best);
   Event FinishPrediction(std::uint32_t i, const Candidate& best, const Grid::Place* place);
+  Event FinishLinearPrediction(std::uint32_t i, const Candidate& best, const Grid::Place& place);
   double PredictWall(const Mover& mi, std::uint8_t& wall) const;
   void Schedule(std::uint32_t i, const Event& event);
   void PredictEngagement(std::uint32_t k);
@@ -241,7 +246,12 @@ inline double EventTime(double now, double dt) {
   const double t = now + dt;
   const double dt_part = t - now;
   const double error = (now - (t - dt_part)) + (dt - dt_part);
-  return error < 0 ? NextDown(t) : t;
+  // Rounded up half the time: a select, not a branch the predictor would miss half the time.
+  // A negative error means the exact sum is not zero, so t = 0 (NextDown's special case) can
+  // only come with error >= 0 and the bit step below is NextDown's for t != 0.
+  const auto bits = std::bit_cast<std::uint64_t>(t);
+  const std::uint64_t down = t > 0 ? bits - 1 : bits + 1;
+  return std::bit_cast<double>(error < 0 ? down : bits);
 }
 
 /// Wall planes of a walled box: inward unit normal n and offset d (n.x >= d inside).

@@ -80,7 +80,7 @@ void World::Impl::Dispatch(const QueueTop& top, bool engagement) {
 void World::Impl::HandleCellCrossing(std::uint32_t i) {
   const PendingEvent event = event_[i];
   const int axis = event.aux / 2;
-  const int direction = (event.aux % 2) ? +1 : -1;
+  const int direction = 2 * (event.aux & 1) - 1;  // +1 or -1 (arithmetic: no branch)
   // A periodic wrap shifts the position: the same motion, seen in the box.
   if (!grid_) {
     starts_[i].p0 += all_pairs_->Move(i, axis, direction);

@@ -68,6 +68,47 @@ void World::Impl::ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors
   stats_.pair_tests += tests;
 }
 
+void World::Impl::TestGathered(std::uint32_t i, std::uint32_t count, Candidate& best) {
+  // ScanNeighbors' straight-line test, the same numbers, for elements gathered in a batch
+  // (Grid::GatherAround, GatherNew) and without a branch on the data: whether a pair approaches,
+  // and then whether it passes wide, are coin tosses in a gas, and a mispredicted branch costs
+  // more than the square root and division done for every pair. The pairs that meet are kept
+  // (in place, at the front of gathered_) and certified after the loop, so that the loop makes
+  // no call and keeps i's data in registers. i itself may be among them: with dp = dv = 0 it
+  // does not approach.
+  if (hit_dt_.size() < gathered_.size()) hit_dt_.resize(gathered_.size());
+  const PathStart pi = starts_[i];
+  const double ri = Radius(i);
+  const PathStart* starts = starts_.data();
+  const std::uint32_t* material = material_.data();
+  const Material* materials = materials_.data();
+  std::uint32_t* gathered = gathered_.data();
+  double* hit_dt = hit_dt_.data();
+  std::uint32_t self = 0, hits = 0;
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const std::uint32_t j = gathered[k];
+    self += j == i ? 1u : 0u;
+    const PathStart& pj = starts[j];
+    const double reference = MaxOf(pi.t0, pj.t0);
+    const double since_i = reference - pi.t0, since_j = reference - pj.t0;
+    const Eigen::Vector2d a_xy = pi.p0.head<2>() + since_i * pi.v0.head<2>();
+    const Eigen::Vector2d b_xy = pj.p0.head<2>() + since_j * pj.v0.head<2>();
+    const Eigen::Vector2d dp_xy = b_xy - a_xy;
+    const Eigen::Vector2d dv_xy = pj.v0.head<2>() - pi.v0.head<2>();
+    const double dp_z = (pj.p0[2] + since_j * pj.v0[2]) - (pi.p0[2] + since_i * pi.v0[2]);
+    const double reach = ri + materials[material[j]].radius;
+    const double dt = LinearMeetingRootNoBranch(dp_xy, dp_z, dv_xy, pj.v0[2] - pi.v0[2], reach);
+    gathered[hits] = j;  // hits <= k: an entry already read
+    hit_dt[hits] = dt;
+    hits += dt != kInfinity ? 1u : 0u;
+  }
+  stats_.pair_tests += count - self;
+  for (std::uint32_t h = 0; h < hits; ++h) {
+    const std::uint32_t j = gathered_[h];
+    OfferLinearMeeting(pi, j, Vec3::Zero(), ri + Radius(j), hit_dt_[h], best);
+  }
+}
+
 void World::Impl::OfferLinearMeeting(const PathStart& pi, std::uint32_t j, const Vec3& shift,
                                      double reach, double dt, Candidate& best) {
   // The positions exactly as ConsiderMeeting's movers have them, for the certification.
@@ -76,7 +117,7 @@ void World::Impl::OfferLinearMeeting(const PathStart& pi, std::uint32_t j, const
   const Vec3 pa = pi.t0 == reference ? pi.p0 : Vec3(pi.p0 + (reference - pi.t0) * pi.v0);
   const Vec3 pb = pj.t0 == reference ? pj.p0 : Vec3(pj.p0 + (reference - pj.t0) * pj.v0);
   dt = FinishLinearMeeting(pa, pi.v0, pb, pj.v0, shift, reach, dt);
-  if (dt != kInfinity) Offer(best, std::max(now_, EventTime(reference, dt)), j);
+  if (dt != kInfinity) Offer(best, MaxOf(now_, EventTime(reference, dt)), j);
 }
 
 double World::Impl::PredictWall(const Mover& mi, std::uint8_t& wall) const {
@@ -97,6 +138,9 @@ double World::Impl::PredictWall(const Mover& mi, std::uint8_t& wall) const {
 Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best,
                                     const Grid::Place* place) {
   candidate_[i] = best;
+  if (straight_lines_ && grid_ && settings_.container.kind != Container::Kind::kWalledBox) {
+    return FinishLinearPrediction(i, best, *place);
+  }
   Event event;
   event.time = best.time;
   event.kind = best.time == kInfinity ? EventKind::kNone : EventKind::kSphereMeet;
@@ -109,13 +153,9 @@ Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best,
   // predicts it), but never before now.
   const PathStart& start = starts_[i];
   const double t0 = start.t0;
-  const bool walled = settings_.container.kind == Container::Kind::kWalledBox;
   int axis = 0, direction = 1;
   double crossing_dt = kInfinity;
-  if (straight_lines_ && grid_ && !walled) {
-    crossing_dt =
-        grid_->PredictLinearCrossing(start.p0, start.v0, *place, now_ - t0, axis, direction);
-  } else {
+  {
     const Mover m0 = BodyMoverOf(i, t0);
     if (!polyhedra_) {  // a polyhedron meets the walls after its cell crossing is known
       std::uint8_t wall = 0;
@@ -127,14 +167,41 @@ Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best,
     crossing_dt = grid_ ? grid_->PredictCrossing(m0, grid_->CellOf(i), now_ - t0, axis, direction)
                         : all_pairs_->PredictCrossing(m0, 0, now_ - t0, axis, direction);
   }
-  const double crossing_time = std::max(now_, EventTime(t0, crossing_dt));
+  const double crossing_time = MaxOf(now_, EventTime(t0, crossing_dt));
   if (crossing_time < event.time) {
     event = Event{crossing_time, EventKind::kCellCrossing,
                   static_cast<std::uint8_t>(axis * 2 + (direction > 0 ? 1 : 0)), kNoIndex, 0};
   }
   // The walls are the detailed phase's business for a polyhedron, and only up to the element's
   // next event (after which it predicts again).
-  if (polyhedra_ && walled) event = PredictPolyhedronWalls(i, event);
+  if (polyhedra_ && settings_.container.kind == Container::Kind::kWalledBox) {
+    event = PredictPolyhedronWalls(i, event);
+  }
+  return event;
+}
+
+Event World::Impl::FinishLinearPrediction(std::uint32_t i, const Candidate& best,
+                                          const Grid::Place& place) {
+  // FinishPrediction for straight lines in a periodic or open box (the gas): the crossing, then
+  // the earlier of the two, with selects instead of branches (which of the two comes first is
+  // a coin toss after every event of a gas).
+  const PathStart& start = starts_[i];
+  int axis = 0, direction = 1;
+  const double crossing_dt =
+      grid_->PredictLinearCrossing(start.p0, start.v0, place, now_ - start.t0, axis, direction);
+  const double crossing_time = MaxOf(now_, EventTime(start.t0, crossing_dt));
+  const bool crossing = crossing_time < best.time;
+  const bool meeting = best.time != kInfinity;
+  Event event;
+  event.time = MinOf(crossing_time, best.time);
+  const auto kind_code = static_cast<std::uint8_t>(
+      crossing ? static_cast<int>(EventKind::kCellCrossing)
+               : static_cast<int>(meeting ? EventKind::kSphereMeet : EventKind::kNone));
+  event.kind = static_cast<EventKind>(kind_code);
+  const std::uint32_t keep = crossing ? 0u : ~0u;
+  event.aux = static_cast<std::uint8_t>((axis * 2 + (direction > 0 ? 1 : 0)) & ~keep);
+  event.target = (best.target & keep) | (kNoIndex & ~keep);
+  event.target_version = best.target_version & keep;
   return event;
 }
 
@@ -148,13 +215,13 @@ void World::Impl::Schedule(std::uint32_t i, const Event& event) {
   }
 }
 
-template <typename VisitNeighbors>
+template <typename Scan>
 void World::Impl::PredictWith(std::uint32_t i, Candidate best, const Grid::Place* place,
-                              VisitNeighbors&& visit) {
+                              Scan&& scan) {
   Event event;
   {
     const PhaseTimer timer(settings_.profile_phases, stats_.seconds_sparse);
-    ScanNeighbors(i, best, visit);
+    scan(best);
     event = FinishPrediction(i, best, place);
   }
   Schedule(i, event);
@@ -162,12 +229,21 @@ void World::Impl::PredictWith(std::uint32_t i, Candidate best, const Grid::Place
 
 void World::Impl::PredictFull(std::uint32_t i) {
   ++stats_.predictions;
-  if (grid_) {
-    const Grid::Place place = grid_->PlaceOf(i);
-    PredictWith(i, Candidate{}, &place, [&](auto&& fn) { grid_->ForEachNeighbor(i, place, fn); });
-  } else {
-    PredictWith(i, Candidate{}, nullptr, [&](auto&& fn) { all_pairs_->ForEachNeighbor(i, fn); });
+  if (!grid_) {
+    PredictWith(i, Candidate{}, nullptr, [&](Candidate& best) {
+      ScanNeighbors(i, best, [&](auto&& fn) { all_pairs_->ForEachNeighbor(i, fn); });
+    });
+    return;
   }
+  const Grid::Place place = grid_->PlaceOf(i);
+  if (straight_lines_ && grid_->Interior(place)) {
+    const std::uint32_t count = grid_->GatherAround(place, gathered_);
+    PredictWith(i, Candidate{}, &place, [&](Candidate& best) { TestGathered(i, count, best); });
+    return;
+  }
+  PredictWith(i, Candidate{}, &place, [&](Candidate& best) {
+    ScanNeighbors(i, best, [&](auto&& fn) { grid_->ForEachNeighbor(i, place, fn); });
+  });
 }
 
 void World::Impl::PredictAfterCrossing(std::uint32_t i, const Grid::Place& place, int axis,
@@ -182,8 +258,15 @@ void World::Impl::PredictAfterCrossing(std::uint32_t i, const Grid::Place& place
     return;
   }
   ++stats_.partial_predictions;
-  PredictWith(i, kept, &place,
-              [&](auto&& fn) { grid_->ForEachNewNeighbor(i, place, axis, direction, fn); });
+  if (straight_lines_ && grid_->Interior(place)) {
+    const std::uint32_t count = grid_->GatherNew(place, axis, direction, gathered_);
+    PredictWith(i, kept, &place, [&](Candidate& best) { TestGathered(i, count, best); });
+    return;
+  }
+  PredictWith(i, kept, &place, [&](Candidate& best) {
+    ScanNeighbors(i, best,
+                  [&](auto&& fn) { grid_->ForEachNewNeighbor(i, place, axis, direction, fn); });
+  });
 }
 
 void World::Impl::PredictEngagement(std::uint32_t k) {

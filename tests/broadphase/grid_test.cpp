@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <map>
 #include <random>
 #include <set>
@@ -175,6 +177,92 @@ TEST(Grid, VisitsAroundACellAndAfterACrossingMatchBruteForceWithShifts) {
     }
     EXPECT_GT(interior_moves, 100);
     EXPECT_GT(edge_moves, 100);
+  }
+}
+
+// Gather (the batch form of the visits, interior cells only) writes the same elements as
+// the visits, plus the element itself around its own cell, without repeats; lists longer than
+// the output's first size make it grow.
+TEST(Grid, GatherWritesWhatTheVisitsVisit) {
+  Grid::Config config;
+  config.hi = Vec3(9, 8, 7);
+  config.periodic = true;
+  for (const std::uint32_t n : {200u, 5000u}) {  // 5000: ~10 per cell, ~270 per 27 cells
+    Grid grid(config, n);
+    std::mt19937_64 rng(n);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (std::uint32_t e = 0; e < n; ++e) grid.Insert(e, Vec3(9 * u(rng), 8 * u(rng), 7 * u(rng)));
+    std::vector<std::uint32_t> out;
+    int interior = 0;
+    for (std::uint32_t e = 0; e < n; ++e) {
+      const Grid::Place place = grid.PlaceOf(e);
+      if (!grid.Interior(place)) continue;
+      ++interior;
+      std::multiset<std::uint32_t> visited = {e};
+      grid.ForEachNeighbor(e, place, [&](std::uint32_t j, const Vec3& shift) {
+        EXPECT_EQ(shift, Vec3::Zero());
+        visited.insert(j);
+      });
+      const std::uint32_t count = grid.GatherAround(place, out);
+      ASSERT_LE(count, out.size());
+      EXPECT_EQ(std::multiset<std::uint32_t>(out.begin(), out.begin() + count), visited) << e;
+      for (int axis = 0; axis < 3; ++axis) {
+        for (const int direction : {-1, 1}) {
+          std::multiset<std::uint32_t> fresh;
+          grid.ForEachNewNeighbor(e, place, axis, direction,
+                                  [&](std::uint32_t j, const Vec3&) { fresh.insert(j); });
+          const std::uint32_t new_count = grid.GatherNew(place, axis, direction, out);
+          EXPECT_EQ(std::multiset<std::uint32_t>(out.begin(), out.begin() + new_count), fresh)
+              << e << " " << axis << " " << direction;
+        }
+      }
+    }
+    EXPECT_GT(interior, static_cast<int>(n) / 5);
+    if (n == 5000) {
+      EXPECT_GT(out.size(), 256u) << "long lists should have grown the output";
+    }
+  }
+}
+
+// The straight-line crossing (branch-free, from the face table) against the general one
+// (SlabExitTime per axis) bit for bit, with axis and direction, velocity components that are
+// zero included, in a periodic and a walled grid.
+TEST(Grid, LinearCrossingIsTheGeneralCrossingBitForBit) {
+  for (const bool periodic : {true, false}) {
+    Grid::Config config;
+    config.lo = Vec3(-1.5, 0.25, 3);
+    config.hi = Vec3(8.5, 7.25, 9);
+    config.periodic = periodic;
+    Grid grid(config, 1);
+    std::mt19937_64 rng(periodic ? 5 : 6);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int zero_components = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+      const Vec3 p = config.lo + (config.hi - config.lo).cwiseProduct(Vec3(u(rng), u(rng), u(rng)));
+      Vec3 v(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5);
+      for (int k = 0; k < 3; ++k) {
+        if (trial % (k + 4) == 0) {
+          v[k] = 0.0;
+          ++zero_components;
+        }
+      }
+      grid.Insert(0, p);
+      const Grid::Place place = grid.PlaceOf(0);
+      const double min_dt = trial % 3 == 0 ? 0.0 : u(rng);
+      int axis = -1, direction = 0, general_axis = -1, general_direction = 0;
+      const double linear = grid.PredictLinearCrossing(p, v, place, min_dt, axis, direction);
+      const Mover m{p, v, Vec3::Zero(), 0.5, 0.0, 0.0};
+      const double general =
+          grid.PredictCrossing(m, place.cell, min_dt, general_axis, general_direction);
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(linear), std::bit_cast<std::uint64_t>(general))
+          << trial << ": " << linear << " vs " << general;
+      if (general != kInfinity) {
+        EXPECT_EQ(axis, general_axis) << trial;
+        EXPECT_EQ(direction, general_direction) << trial;
+      }
+      grid.Remove(0);
+    }
+    EXPECT_GT(zero_components, 5000);
   }
 }
 

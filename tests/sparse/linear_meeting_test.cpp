@@ -90,5 +90,41 @@ TEST(LinearMeeting, BitIdenticalToTheEigenFormulaAndGeneralGap) {
   EXPECT_GT(meetings, 20000) << "the sample should hold many certified meetings";
 }
 
+// The gathered test's branch-free root (TestGathered) gives LinearMeetingRoot's bits: both
+// early exits (separating, passing wide), overlap by round-off (0) and real roots.
+TEST(LinearMeeting, BranchFreeRootIsTheBranchingOneBitForBit) {
+  scenes::Random random(20261126);
+  int roots = 0, zeros = 0, separating = 0, wide = 0;
+  for (int trial = 0; trial < 400000; ++trial) {
+    const double scale = std::pow(10.0, random.Uniform(-3.0, 3.0));
+    const Vec3 dp =
+        scale * Vec3(random.Uniform(-3, 3), random.Uniform(-3, 3), random.Uniform(-3, 3));
+    const Vec3 dv = Vec3(random.Uniform(-1, 1), random.Uniform(-1, 1), random.Uniform(-1, 1)) -
+                    dp * random.Uniform(0.0, 2.0) / scale;
+    // Some pairs overlap (reach beyond |dp|), some touch exactly, the rest are apart.
+    double reach = scale * random.Uniform(0.2, 2.0);
+    if (trial % 50 == 0) reach = dp.norm();
+    if (trial % 97 == 0) reach = 0.0;
+    const double expected =
+        LinearMeetingRoot(dp.head<2>(), dp[2], dv.head<2>(), dv[2], [reach] { return reach; });
+    const double got = LinearMeetingRootNoBranch(dp.head<2>(), dp[2], dv.head<2>(), dv[2], reach);
+    ASSERT_TRUE(SameBits(got, expected)) << "trial " << trial << ": " << got << " vs " << expected;
+    const double b = dp.dot(dv);
+    if (b >= 0) {
+      ++separating;
+    } else if (expected == kInfinity) {
+      ++wide;
+    } else if (expected == 0.0) {
+      ++zeros;
+    } else {
+      ++roots;
+    }
+  }
+  EXPECT_GT(roots, 20000);
+  EXPECT_GT(zeros, 2000);
+  EXPECT_GT(separating, 10000);
+  EXPECT_GT(wide, 20000);
+}
+
 }  // namespace
 }  // namespace sparsedyn

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace sparsedyn {
+
+// Selects and extrema of doubles that compile to conditional moves or min/max instructions,
+// never to branches. GCC 12 turns `c ? a : b` and std::max on doubles into a compare and a
+// jump, which the processor guesses wrong about half the time when the data decide it (which
+// of two segment starts is later, whether a pair approaches); that costs more than the few
+// instructions below. Each gives the same bits as the plain expression in its comment,
+// signed zeros and NaNs included.
+
+/// condition ? a : b
+inline double Select(bool condition, double a, double b) {
+  const std::uint64_t mask = std::uint64_t{0} - static_cast<std::uint64_t>(condition);
+  return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) |
+                               (std::bit_cast<std::uint64_t>(b) & ~mask));
+}
+
+/// std::max(a, b), i.e. a < b ? b : a
+inline double MaxOf(double a, double b) {
+#if defined(__SSE2__)
+  // maxsd x, y gives x > y ? x : y.
+  return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(b), _mm_set_sd(a)));
+#else
+  return Select(a < b, b, a);
+#endif
+}
+
+/// a < b ? a : b (std::min(b, a): ties and NaN give b)
+inline double MinOf(double a, double b) {
+#if defined(__SSE2__)
+  // minsd x, y gives x < y ? x : y.
+  return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(a), _mm_set_sd(b)));
+#else
+  return Select(a < b, a, b);
+#endif
+}
+
+/// std::sqrt(x) for x >= 0 (the same correctly rounded result), without the library call that
+/// GCC keeps beside the square-root instruction for a negative x (to set errno): a call on any
+/// path of a loop makes it spill its registers around every iteration.
+inline double SqrtOf(double x) {
+#if defined(__SSE2__)
+  const __m128d v = _mm_set_sd(x);
+  return _mm_cvtsd_f64(_mm_sqrt_sd(v, v));
+#else
+  return std::sqrt(x);
+#endif
+}
+
+}  // namespace sparsedyn

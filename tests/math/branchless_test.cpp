@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+// The branch-free selects and extrema against the plain expressions they stand for, bit for bit,
+// on values that include signed zeros, infinities, NaNs and subnormals.
+#include "math/branchless.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "scenes/random.hpp"
+
+namespace sparsedyn {
+namespace {
+
+std::uint64_t Bits(double x) {
+  std::uint64_t b = 0;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+
+std::vector<double> Values() {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> v = {0.0,     -0.0,  1.0,          -1.0,
+                           inf,     -inf,  std::nan(""), std::numeric_limits<double>::denorm_min(),
+                           -1e-310, 1e308, 2.5};
+  scenes::Random random(7);
+  for (int i = 0; i < 200; ++i) v.push_back(random.Uniform(-10.0, 10.0));
+  return v;
+}
+
+TEST(Branchless, SelectMaxMinAreThePlainExpressionsBitForBit) {
+  const std::vector<double> values = Values();
+  for (const double a : values) {
+    for (const double b : values) {
+      EXPECT_EQ(Bits(Select(true, a, b)), Bits(a));
+      EXPECT_EQ(Bits(Select(false, a, b)), Bits(b));
+      EXPECT_EQ(Bits(MaxOf(a, b)), Bits(std::max(a, b))) << a << " " << b;
+      EXPECT_EQ(Bits(MinOf(a, b)), Bits(a < b ? a : b)) << a << " " << b;
+    }
+  }
+}
+
+TEST(Branchless, SqrtIsTheLibrarySquareRootForNonNegativeValues) {
+  scenes::Random random(8);
+  for (int i = 0; i < 100000; ++i) {
+    const double x = std::pow(10.0, random.Uniform(-300.0, 300.0)) * random.Uniform(0.5, 1.0);
+    ASSERT_EQ(Bits(SqrtOf(x)), Bits(std::sqrt(x))) << x;
+  }
+  for (const double x : {0.0, -0.0, std::numeric_limits<double>::infinity(),
+                         std::numeric_limits<double>::denorm_min()}) {
+    EXPECT_EQ(Bits(SqrtOf(x)), Bits(std::sqrt(x))) << x;
+  }
+}
+
+}  // namespace
+}  // namespace sparsedyn
