@@ -131,27 +131,32 @@ class Grid {
   }
 
   /// Whether the cell at `place` is off the grid's outer layer: its 27 neighbours are then in
-  /// the grid, unwrapped (no image shift), at fixed index offsets, and the Gather functions
+  /// the grid, unwrapped (no image shift), at fixed index offsets, and ForEachGathered...
   /// below apply.
   bool Interior(const Place& place) const {
     return place.at[0] > 0 && place.at[0] < n_[0] - 1 && place.at[1] > 0 &&
            place.at[1] < n_[1] - 1 && place.at[2] > 0 && place.at[2] < n_[2] - 1;
   }
 
-  /// For an interior `place`: writes the elements of the 27 cells around it, the cell's own
-  /// elements included, to `out` from index 0 on (growing it when needed) and returns how many.
-  /// What ForEachNeighbor visits, plus the cell's owner, in another order and without a branch
-  /// on which cells are empty or how long their lists are: in a gas most cells hold zero or one
-  /// element, and a walk that branches on that is mispredicted at every few cells.
-  std::uint32_t GatherAround(const Place& place, std::vector<std::uint32_t>& out) const {
-    return Gather<27>(place.cell, around_cells_.data(), out);
+  /// For an interior `place`: calls fn(j) for every element j of the 27 cells around it, the
+  /// place's own elements included (what ForEachNeighbor visits, plus e), in another order and
+  /// without a branch on which cells are empty or how long their lists are: in a gas most cells
+  /// hold zero or one element, and a walk that branches on that is mispredicted every few cells.
+  /// `pending` is the work list (resized to hold every element, so it never grows during a
+  /// visit); fn may reuse the entries before the one it is called for.
+  template <typename Fn>
+  void ForEachGatheredAround(const Place& place, std::vector<std::uint32_t>& pending,
+                             Fn&& fn) const {
+    VisitGathered<27>(place.cell, around_cells_.data(), pending, fn);
   }
 
-  /// For an interior `place` entered across (axis, direction): the elements of the 9 cells that
-  /// became adjacent, as GatherAround writes them (what ForEachNewNeighbor visits).
-  std::uint32_t GatherNew(const Place& place, int axis, int direction,
-                          std::vector<std::uint32_t>& out) const {
-    return Gather<9>(place.cell, new_single_cells_[axis * 2 + (direction > 0 ? 1 : 0)].data(), out);
+  /// ForEachGatheredAround for the 9 cells that became adjacent to an interior `place` entered
+  /// across (axis, direction): what ForEachNewNeighbor visits.
+  template <typename Fn>
+  void ForEachGatheredNew(const Place& place, int axis, int direction,
+                          std::vector<std::uint32_t>& pending, Fn&& fn) const {
+    VisitGathered<9>(place.cell, new_single_cells_[axis * 2 + (direction > 0 ? 1 : 0)].data(),
+                     pending, fn);
   }
 
   /// The elements renumbered: element `old_of_new[e]` becomes element e, keeping its cell.
@@ -216,15 +221,17 @@ class Grid {
     }
     for (int d = -1; d <= 1; ++d) Single(axis, at + d, span);
   }
-  // The cells cell + offsets[c] (c < count): their heads first, each written and counted only
-  // if not empty (a select, not a branch), then every list followed by appending each gathered
-  // element's successor in the same way. `out` grows when a list is long (rarely: it starts
-  // with room for a few hundred).
-  template <int kCount>
-  std::uint32_t Gather(std::uint32_t cell, const std::int32_t* offsets,
-                       std::vector<std::uint32_t>& out) const {
-    if (out.size() < kGatherMinimum) out.resize(kGatherMinimum);
-    std::uint32_t* buffer = out.data();
+  // The cells cell + offsets[c] (c < kCount): their heads are written to `pending` first, each
+  // counted only if not empty (a select, not a branch); then each pending element, in turn,
+  // has its list successor appended in the same way and is handed to fn. Its successor and its
+  // data are then fetched together, as a walk along the list would.
+  template <int kCount, typename Fn>
+  void VisitGathered(std::uint32_t cell, const std::int32_t* offsets,
+                     std::vector<std::uint32_t>& pending, Fn& fn) const {
+    // Room for every element and the heads: no check in the loop (a call there would make it
+    // keep fn's values in memory).
+    if (pending.size() < next_.size() + kCount + 1) pending.resize(next_.size() + kCount + 1);
+    std::uint32_t* buffer = pending.data();
     std::uint32_t n = 0;
     for (int c = 0; c < kCount; ++c) {
       const std::uint32_t h = head_[cell + static_cast<std::uint32_t>(offsets[c])];
@@ -232,17 +239,13 @@ class Grid {
       n += h != kNoIndex ? 1u : 0u;
     }
     for (std::uint32_t k = 0; k < n; ++k) {
-      if (n + 1 >= out.size()) {
-        out.resize(2 * out.size());
-        buffer = out.data();
-      }
-      const std::uint32_t next = next_[buffer[k]];
+      const std::uint32_t j = buffer[k];
+      const std::uint32_t next = next_[j];
       buffer[n] = next;
       n += next != kNoIndex ? 1u : 0u;
+      fn(j);
     }
-    return n;
   }
-  static constexpr std::size_t kGatherMinimum = 256;
   // Rows of three cells along x starting at cell + offsets[r]; cells + offsets[r] one by one.
   // Indices wrap as unsigned numbers: cell + offset stays inside the grid for an interior cell.
   template <typename Fn>

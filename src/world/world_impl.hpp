@@ -127,11 +127,12 @@ class World::Impl {
   bool started_ = false;
   bool has_envelopes_ = false;
   bool straight_lines_ = false;  // no envelopes and no acceleration: the fast meeting test
+  bool batch_tests_ = false;     // straight lines, few enough elements: TestGathered
+  static constexpr std::uint32_t kBatchTestMaxElements = 1u << 18;
   double max_radius_ = 0.0;
   std::optional<Grid> grid_;
   std::optional<AllPairs> all_pairs_;
-  std::vector<std::uint32_t> gathered_;  // Grid::Gather's output, reused by every prediction
-  std::vector<double> hit_dt_;           // TestGathered's meeting roots, as long as gathered_
+  std::vector<std::uint32_t> gathered_;  // the Grid gathers' work list, then TestGathered's hits
   CalendarQueue queue_;             // one slot per element
   CalendarQueue engagement_queue_;  // one slot per engagement
   Engagements engagements_;
@@ -166,9 +167,12 @@ class World::Impl {
                                             double reach, double dt, Candidate& best);
   template <typename VisitNeighbors>
   void ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors&& visit);
-  /// ScanNeighbors for straight lines over gathered_[0 .. count) (interior grid cells: no
-  /// image shift), without branches on the data until a pair meets.
-  void TestGathered(std::uint32_t i, std::uint32_t count, Candidate& best);
+  /// ScanNeighbors for straight lines over what `gather(fn)` visits (a Grid gather: interior
+  /// cells, no image shifts), without branches on the data. TestGatheredOf picks the form.
+  template <bool kOneMaterial, typename Gather>
+  void TestGathered(std::uint32_t i, Candidate& best, Gather&& gather);
+  template <typename Gather>
+  void TestGatheredOf(std::uint32_t i, Candidate& best, Gather&& gather);
   Event FinishPrediction(std::uint32_t i, const Candidate& best, const Grid::Place* place);
   Event FinishLinearPrediction(std::uint32_t i, const Candidate& best, const Grid::Place& place);
   double PredictWall(const Mover& mi, std::uint8_t& wall) const;

@@ -68,44 +68,61 @@ void World::Impl::ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors
   stats_.pair_tests += tests;
 }
 
-void World::Impl::TestGathered(std::uint32_t i, std::uint32_t count, Candidate& best) {
-  // ScanNeighbors' straight-line test, the same numbers, for elements gathered in a batch
-  // (Grid::GatherAround, GatherNew) and without a branch on the data: whether a pair approaches,
-  // and then whether it passes wide, are coin tosses in a gas, and a mispredicted branch costs
-  // more than the square root and division done for every pair. The pairs that meet are kept
-  // (in place, at the front of gathered_) and certified after the loop, so that the loop makes
-  // no call and keeps i's data in registers. i itself may be among them: with dp = dv = 0 it
-  // does not approach.
-  if (hit_dt_.size() < gathered_.size()) hit_dt_.resize(gathered_.size());
+namespace {
+
+// The straight-line root of ScanNeighbors for a gathered pair (no image shift), branch-free.
+[[gnu::always_inline]] inline double GatheredMeetingRoot(const PathStart& pi, const PathStart& pj,
+                                                         double reach) {
+  const double reference = MaxOf(pi.t0, pj.t0);
+  const double since_i = reference - pi.t0, since_j = reference - pj.t0;
+  const Eigen::Vector2d a_xy = pi.p0.head<2>() + since_i * pi.v0.head<2>();
+  const Eigen::Vector2d b_xy = pj.p0.head<2>() + since_j * pj.v0.head<2>();
+  const Eigen::Vector2d dp_xy = b_xy - a_xy;
+  const Eigen::Vector2d dv_xy = pj.v0.head<2>() - pi.v0.head<2>();
+  const double dp_z = (pj.p0[2] + since_j * pj.v0[2]) - (pi.p0[2] + since_i * pi.v0[2]);
+  return LinearMeetingRootNoBranch(dp_xy, dp_z, dv_xy, pj.v0[2] - pi.v0[2], reach);
+}
+
+}  // namespace
+
+template <bool kOneMaterial, typename Gather>
+void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather) {
+  // ScanNeighbors' straight-line test, the same numbers, over the elements a Grid gather
+  // visits, without a branch on the data: whether a pair approaches, and then whether it passes
+  // wide, are coin tosses in a gas, and a mispredicted branch costs more than the square root
+  // and division done for every pair. The pairs that meet are noted (in the gather's used
+  // entries) and certified after the visit, so that the visit makes no call and keeps i's data
+  // in registers. i itself is among them: with dp = dv = 0 it does not approach.
   const PathStart pi = starts_[i];
   const double ri = Radius(i);
   const PathStart* starts = starts_.data();
   const std::uint32_t* material = material_.data();
   const Material* materials = materials_.data();
-  std::uint32_t* gathered = gathered_.data();
-  double* hit_dt = hit_dt_.data();
-  std::uint32_t self = 0, hits = 0;
-  for (std::uint32_t k = 0; k < count; ++k) {
-    const std::uint32_t j = gathered[k];
+  std::uint32_t visited = 0, self = 0, hits = 0;
+  gather([&](std::uint32_t j) [[gnu::always_inline]] {
+    ++visited;
     self += j == i ? 1u : 0u;
-    const PathStart& pj = starts[j];
-    const double reference = MaxOf(pi.t0, pj.t0);
-    const double since_i = reference - pi.t0, since_j = reference - pj.t0;
-    const Eigen::Vector2d a_xy = pi.p0.head<2>() + since_i * pi.v0.head<2>();
-    const Eigen::Vector2d b_xy = pj.p0.head<2>() + since_j * pj.v0.head<2>();
-    const Eigen::Vector2d dp_xy = b_xy - a_xy;
-    const Eigen::Vector2d dv_xy = pj.v0.head<2>() - pi.v0.head<2>();
-    const double dp_z = (pj.p0[2] + since_j * pj.v0[2]) - (pi.p0[2] + since_i * pi.v0[2]);
-    const double reach = ri + materials[material[j]].radius;
-    const double dt = LinearMeetingRootNoBranch(dp_xy, dp_z, dv_xy, pj.v0[2] - pi.v0[2], reach);
-    gathered[hits] = j;  // hits <= k: an entry already read
-    hit_dt[hits] = dt;
+    // One material (a gas): no per-pair look-up, a cache miss per pair at N = 10^6.
+    const double reach = ri + (kOneMaterial ? ri : materials[material[j]].radius);
+    const double dt = GatheredMeetingRoot(pi, starts[j], reach);
+    gathered_[hits] = j;  // an entry the gather is done with (hits < visited)
     hits += dt != kInfinity ? 1u : 0u;
-  }
-  stats_.pair_tests += count - self;
+  });
+  stats_.pair_tests += visited - self;
   for (std::uint32_t h = 0; h < hits; ++h) {
     const std::uint32_t j = gathered_[h];
-    OfferLinearMeeting(pi, j, Vec3::Zero(), ri + Radius(j), hit_dt_[h], best);
+    const double reach = ri + Radius(j);
+    OfferLinearMeeting(pi, j, Vec3::Zero(), reach, GatheredMeetingRoot(pi, starts_[j], reach),
+                       best);
+  }
+}
+
+template <typename Gather>
+void World::Impl::TestGatheredOf(std::uint32_t i, Candidate& best, Gather&& gather) {
+  if (materials_.size() == 1) {
+    TestGathered<true>(i, best, gather);
+  } else {
+    TestGathered<false>(i, best, gather);
   }
 }
 
@@ -236,9 +253,11 @@ void World::Impl::PredictFull(std::uint32_t i) {
     return;
   }
   const Grid::Place place = grid_->PlaceOf(i);
-  if (straight_lines_ && grid_->Interior(place)) {
-    const std::uint32_t count = grid_->GatherAround(place, gathered_);
-    PredictWith(i, Candidate{}, &place, [&](Candidate& best) { TestGathered(i, count, best); });
+  if (batch_tests_ && grid_->Interior(place)) {
+    PredictWith(i, Candidate{}, &place, [&](Candidate& best) {
+      TestGatheredOf(i, best,
+                     [&](auto&& fn) { grid_->ForEachGatheredAround(place, gathered_, fn); });
+    });
     return;
   }
   PredictWith(i, Candidate{}, &place, [&](Candidate& best) {
@@ -258,9 +277,12 @@ void World::Impl::PredictAfterCrossing(std::uint32_t i, const Grid::Place& place
     return;
   }
   ++stats_.partial_predictions;
-  if (straight_lines_ && grid_->Interior(place)) {
-    const std::uint32_t count = grid_->GatherNew(place, axis, direction, gathered_);
-    PredictWith(i, kept, &place, [&](Candidate& best) { TestGathered(i, count, best); });
+  if (batch_tests_ && grid_->Interior(place)) {
+    PredictWith(i, kept, &place, [&](Candidate& best) {
+      TestGatheredOf(i, best, [&](auto&& fn) {
+        grid_->ForEachGatheredNew(place, axis, direction, gathered_, fn);
+      });
+    });
     return;
   }
   PredictWith(i, kept, &place, [&](Candidate& best) {
