@@ -8,8 +8,8 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/deps.sh"
-cmake -S "$root" --preset bench -DSPARSEDYN_BUILD_TESTS=OFF -DSPARSEDYN_BUILD_BENCHMARKS=OFF \
-  -DSPARSEDYN_BUILD_EXAMPLES=OFF >/dev/null
+# The benchmarks stay configured (the bench preset's own build folder): only the tool is built.
+cmake -S "$root" --preset bench -DSPARSEDYN_BUILD_TESTS=OFF -DSPARSEDYN_BUILD_EXAMPLES=OFF >/dev/null
 cmake --build "$root/build/bench" --target sparsedyn_cli -j"$(nproc)" >/dev/null
 if (($# == 0)); then
   set -- run
