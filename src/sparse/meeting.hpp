@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "math/branchless.hpp"
 #include "sparse/mover.hpp"
 #include "sparsedyn/types.hpp"
 
@@ -50,20 +49,19 @@ inline double LinearMeetingRoot(const Eigen::Vector2d& dp_xy, double dp_z,
   return c / (-b_half + std::sqrt(disc));
 }
 
-/// LinearMeetingRoot with the summed radius given and without branches: the same result, bit
-/// for bit, from selects. For batches of pairs whose approach and miss are unpredictable (a
-/// gas): the square root and division are done for every pair instead of a branch that the
-/// processor guesses wrong about half the time.
-inline double LinearMeetingRootNoBranch(const Eigen::Vector2d& dp_xy, double dp_z,
-                                        const Eigen::Vector2d& dv_xy, double dv_z, double reach) {
+/// Whether LinearMeetingRoot finds a meeting (a finite root) for these values, without
+/// branches: the same sums, so the same verdict, bit for bit. For batches of pairs whose
+/// approach and miss are unpredictable (a gas): the few pairs that meet have their root
+/// computed afterwards, while the test of the many that do not costs neither a square root nor
+/// a branch that the processor guesses wrong about half the time.
+inline bool LinearMeetingFound(const Eigen::Vector2d& dp_xy, double dp_z,
+                               const Eigen::Vector2d& dv_xy, double dv_z, double reach) {
   const double b_half = dp_xy.dot(dv_xy) + dp_z * dv_z;
   const double c = (dp_xy.squaredNorm() + dp_z * dp_z) - reach * reach;
   const double a_coef = dv_xy.squaredNorm() + dv_z * dv_z;
   const double disc = b_half * b_half - a_coef * c;
-  // disc >= 0 whenever c <= 0 (a_coef >= 0), so an approaching pair with a root has disc >= 0.
-  const double root = c / (-b_half + SqrtOf(MaxOf(disc, 0.0)));
-  const bool meets = (b_half < 0) & (disc >= 0);
-  return Select(meets, Select(c <= 0, 0.0, root), kInfinity);
+  // disc >= 0 whenever c <= 0 (a_coef >= 0): an approaching overlap (root 0) is found too.
+  return (b_half < 0) & (disc >= 0);
 }
 
 /// The end of PredictLinearMeeting: a root `dt` from LinearMeetingRoot, limited to `horizon`

@@ -70,17 +70,20 @@ void World::Impl::ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors
 
 namespace {
 
-// The straight-line root of ScanNeighbors for a gathered pair (no image shift), branch-free.
-[[gnu::always_inline]] inline double GatheredMeetingRoot(const PathStart& pi, const PathStart& pj,
-                                                         double reach) {
+// ScanNeighbors' straight-line values for a gathered pair (no image shift), read with MaxOf:
+// which of the two segments started later is a coin toss.
+struct GatheredPair {
+  Eigen::Vector2d dp_xy, dv_xy;
+  double dp_z, dv_z;
+};
+[[gnu::always_inline]] inline GatheredPair RelativeMotion(const PathStart& pi,
+                                                          const PathStart& pj) {
   const double reference = MaxOf(pi.t0, pj.t0);
   const double since_i = reference - pi.t0, since_j = reference - pj.t0;
   const Eigen::Vector2d a_xy = pi.p0.head<2>() + since_i * pi.v0.head<2>();
   const Eigen::Vector2d b_xy = pj.p0.head<2>() + since_j * pj.v0.head<2>();
-  const Eigen::Vector2d dp_xy = b_xy - a_xy;
-  const Eigen::Vector2d dv_xy = pj.v0.head<2>() - pi.v0.head<2>();
-  const double dp_z = (pj.p0[2] + since_j * pj.v0[2]) - (pi.p0[2] + since_i * pi.v0[2]);
-  return LinearMeetingRootNoBranch(dp_xy, dp_z, dv_xy, pj.v0[2] - pi.v0[2], reach);
+  return {b_xy - a_xy, pj.v0.head<2>() - pi.v0.head<2>(),
+          (pj.p0[2] + since_j * pj.v0[2]) - (pi.p0[2] + since_i * pi.v0[2]), pj.v0[2] - pi.v0[2]};
 }
 
 }  // namespace
@@ -89,10 +92,10 @@ template <bool kOneMaterial, typename Gather>
 void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather) {
   // ScanNeighbors' straight-line test, the same numbers, over the elements a Grid gather
   // visits, without a branch on the data: whether a pair approaches, and then whether it passes
-  // wide, are coin tosses in a gas, and a mispredicted branch costs more than the square root
-  // and division done for every pair. The pairs that meet are noted (in the gather's used
-  // entries) and certified after the visit, so that the visit makes no call and keeps i's data
-  // in registers. i itself is among them: with dp = dv = 0 it does not approach.
+  // wide, are coin tosses in a gas, and a mispredicted branch costs more than testing both.
+  // The pairs that meet are noted (in the gather's used entries) and have their root computed
+  // and certified after the visit, so that the visit makes no call and keeps i's data in
+  // registers. i itself is among them: with dp = dv = 0 it does not approach.
   const PathStart pi = starts_[i];
   const double ri = Radius(i);
   const PathStart* starts = starts_.data();
@@ -104,16 +107,18 @@ void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather
     self += j == i ? 1u : 0u;
     // One material (a gas): no per-pair look-up, a cache miss per pair at N = 10^6.
     const double reach = ri + (kOneMaterial ? ri : materials[material[j]].radius);
-    const double dt = GatheredMeetingRoot(pi, starts[j], reach);
+    const GatheredPair m = RelativeMotion(pi, starts[j]);
     gathered_[hits] = j;  // an entry the gather is done with (hits < visited)
-    hits += dt != kInfinity ? 1u : 0u;
+    hits += LinearMeetingFound(m.dp_xy, m.dp_z, m.dv_xy, m.dv_z, reach) ? 1u : 0u;
   });
   stats_.pair_tests += visited - self;
   for (std::uint32_t h = 0; h < hits; ++h) {
     const std::uint32_t j = gathered_[h];
     const double reach = ri + Radius(j);
-    OfferLinearMeeting(pi, j, Vec3::Zero(), reach, GatheredMeetingRoot(pi, starts_[j], reach),
-                       best);
+    const GatheredPair m = RelativeMotion(pi, starts_[j]);
+    const double dt =
+        LinearMeetingRoot(m.dp_xy, m.dp_z, m.dv_xy, m.dv_z, [reach] { return reach; });
+    OfferLinearMeeting(pi, j, Vec3::Zero(), reach, dt, best);
   }
 }
 
