@@ -407,7 +407,8 @@ std::size_t World::Impl::MemoryBytes() const {
       (version_.capacity() + public_of_.capacity() + internal_of_.capacity()) *
           sizeof(std::uint32_t) +
       event_.capacity() * sizeof(PendingEvent) + candidate_.capacity() * sizeof(Candidate) +
-      queue_.MemoryBytes() + engagement_queue_.MemoryBytes();
+      queue_.MemoryBytes() + engagement_queue_.MemoryBytes() +
+      gathered_.capacity() * sizeof(std::uint32_t);
   bytes += shape_.capacity() * sizeof(std::uint32_t) + q0_.capacity() * sizeof(Eigen::Quaterniond) +
            omega_.capacity() * sizeof(Vec3) + spin_radius_.capacity() * sizeof(double);
   if (grid_) bytes += grid_->MemoryBytes();
