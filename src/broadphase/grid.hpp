@@ -143,7 +143,7 @@ class Grid {
   /// without a branch on which cells are empty or how long their lists are: in a gas most cells
   /// hold zero or one element, and a walk that branches on that is mispredicted every few cells.
   /// `pending` is the work list (resized to hold every element, so it never grows during a
-  /// visit); fn may reuse the entries before the one it is called for.
+  /// visit); fn may overwrite its entries up to the one it is called for (they have been read).
   template <typename Fn>
   void ForEachGatheredAround(const Place& place, std::vector<std::uint32_t>& pending,
                              Fn&& fn) const {
