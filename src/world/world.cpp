@@ -268,10 +268,10 @@ void World::Impl::Start() {
   straight_lines_ = !has_envelopes_ && !polyhedra_;
   straight_lines_ = straight_lines_ && !own_accelerations_ && uniform_acceleration_.isZero(0.0);
   // The batch pair test (TestGathered) while the elements' data fit in the caches: it trades
-  // mispredicted branches for instructions, a gain when the data are at hand (N = 10^4: +20%
+  // mispredicted branches for instructions, a gain when the data are at hand (N = 10^4: +30%
   // collisions per CPU s) and a loss when each pair waits for main memory, where the branching
-  // walk lets the processor run ahead to more misses (N = 10^6: -8%; 10^5: even). See
-  // docs/benchmarks.md.
+  // walk lets the processor run ahead to more misses (N = 10^6: -7%; 10^5: even). See
+  // docs/benchmarks.md, ninth measurement.
   batch_tests_ = straight_lines_ && n <= kBatchTestMaxElements;
 
   // The grid needs a box and bounded element radii (an envelope grows without bound).

@@ -35,58 +35,53 @@ void World::Impl::Offer(Candidate& best, double t, std::uint32_t j) const {
   if (t < best.time || (t == best.time && j < best.target)) best = Candidate{t, j, version_[j]};
 }
 
+namespace {
+
+// The straight-line pair test's relative position and velocity of j's image (j's position plus
+// `shift`) seen from i, both moved to the later of their segment starts (MaxOf: which started
+// later is a coin toss). x and y as one SSE2 pair, z apart; every sum as ConsiderMeeting's
+// movers make it (x + 0 v = x up to the sign of a zero coordinate, which no dot product of the
+// test can see), so both scans give PredictMeeting's numbers.
+struct RelativeMotion {
+  Eigen::Vector2d dp_xy, dv_xy;
+  double dp_z, dv_z;
+};
+[[gnu::always_inline]] inline RelativeMotion RelativeMotionOf(const PathStart& pi,
+                                                              const PathStart& pj,
+                                                              const Vec3& shift) {
+  const double reference = MaxOf(pi.t0, pj.t0);
+  const double since_i = reference - pi.t0, since_j = reference - pj.t0;
+  const Eigen::Vector2d a_xy = pi.p0.head<2>() + since_i * pi.v0.head<2>();
+  const Eigen::Vector2d b_xy = pj.p0.head<2>() + since_j * pj.v0.head<2>();
+  const double a_z = pi.p0[2] + since_i * pi.v0[2];
+  const double b_z = pj.p0[2] + since_j * pj.v0[2];
+  return {(b_xy + shift.head<2>()) - a_xy, pj.v0.head<2>() - pi.v0.head<2>(),
+          (b_z + shift[2]) - a_z, pj.v0[2] - pi.v0[2]};
+}
+
+}  // namespace
+
 template <typename VisitNeighbors>
 void World::Impl::ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors&& visit) {
   if (!straight_lines_) {
     visit([&](std::uint32_t j, const Vec3& shift) { ConsiderMeeting(i, j, shift, best); });
     return;
   }
-  // The hot path: straight lines, no envelopes, no engagements. The same numbers as
-  // ConsiderMeeting (MoverOf + PredictMeeting), with the actor's data read once, x and y as one
-  // SSE2 pair and z apart. Both starts move to the reference time without a branch (x + 0 v = x
-  // up to the sign of a zero coordinate, which no dot product below can see). Inlined into the
-  // cell walk: a call per pair cost a fifth of the test.
+  // The hot path: straight lines, no envelopes, no engagements: the same numbers as
+  // ConsiderMeeting (MoverOf + PredictMeeting), with the actor's data read once. Inlined into
+  // the cell walk: a call per pair cost a fifth of the test.
   const PathStart pi = starts_[i];
   const double ri = Radius(i);
   std::uint64_t tests = 0;
   visit([&](std::uint32_t j, const Vec3& shift) [[gnu::always_inline]] {
     ++tests;
-    const PathStart& pj = starts_[j];
-    const double reference = std::max(pi.t0, pj.t0);
-    const double since_i = reference - pi.t0, since_j = reference - pj.t0;
-    const Eigen::Vector2d a_xy = pi.p0.head<2>() + since_i * pi.v0.head<2>();
-    const Eigen::Vector2d b_xy = pj.p0.head<2>() + since_j * pj.v0.head<2>();
-    const Eigen::Vector2d dp_xy = (b_xy + shift.head<2>()) - a_xy;
-    const Eigen::Vector2d dv_xy = pj.v0.head<2>() - pi.v0.head<2>();
-    const double a_z = pi.p0[2] + since_i * pi.v0[2];
-    const double b_z = pj.p0[2] + since_j * pj.v0[2];
+    const RelativeMotion m = RelativeMotionOf(pi, starts_[j], shift);
     const auto reach = [&] { return ri + Radius(j); };
-    const double dt =
-        LinearMeetingRoot(dp_xy, (b_z + shift[2]) - a_z, dv_xy, pj.v0[2] - pi.v0[2], reach);
+    const double dt = LinearMeetingRoot(m.dp_xy, m.dp_z, m.dv_xy, m.dv_z, reach);
     if (dt != kInfinity) OfferLinearMeeting(pi, j, shift, reach(), dt, best);
   });
   stats_.pair_tests += tests;
 }
-
-namespace {
-
-// ScanNeighbors' straight-line values for a gathered pair (no image shift), read with MaxOf:
-// which of the two segments started later is a coin toss.
-struct GatheredPair {
-  Eigen::Vector2d dp_xy, dv_xy;
-  double dp_z, dv_z;
-};
-[[gnu::always_inline]] inline GatheredPair RelativeMotion(const PathStart& pi,
-                                                          const PathStart& pj) {
-  const double reference = MaxOf(pi.t0, pj.t0);
-  const double since_i = reference - pi.t0, since_j = reference - pj.t0;
-  const Eigen::Vector2d a_xy = pi.p0.head<2>() + since_i * pi.v0.head<2>();
-  const Eigen::Vector2d b_xy = pj.p0.head<2>() + since_j * pj.v0.head<2>();
-  return {b_xy - a_xy, pj.v0.head<2>() - pi.v0.head<2>(),
-          (pj.p0[2] + since_j * pj.v0[2]) - (pi.p0[2] + since_i * pi.v0[2]), pj.v0[2] - pi.v0[2]};
-}
-
-}  // namespace
 
 template <bool kOneMaterial, typename Gather>
 void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather) {
@@ -98,6 +93,7 @@ void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather
   // registers. i itself is among them: with dp = dv = 0 it does not approach.
   const PathStart pi = starts_[i];
   const double ri = Radius(i);
+  const Vec3 kNoShift = Vec3::Zero();  // interior cells: no image shift
   const PathStart* starts = starts_.data();
   const std::uint32_t* material = material_.data();
   const Material* materials = materials_.data();
@@ -107,7 +103,7 @@ void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather
     self += j == i ? 1u : 0u;
     // One material (a gas): no per-pair look-up, a cache miss per pair at N = 10^6.
     const double reach = ri + (kOneMaterial ? ri : materials[material[j]].radius);
-    const GatheredPair m = RelativeMotion(pi, starts[j]);
+    const RelativeMotion m = RelativeMotionOf(pi, starts[j], kNoShift);
     gathered_[hits] = j;  // an entry the gather is done with (hits < visited)
     hits += LinearMeetingFound(m.dp_xy, m.dp_z, m.dv_xy, m.dv_z, reach) ? 1u : 0u;
   });
@@ -115,7 +111,7 @@ void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather
   for (std::uint32_t h = 0; h < hits; ++h) {
     const std::uint32_t j = gathered_[h];
     const double reach = ri + Radius(j);
-    const GatheredPair m = RelativeMotion(pi, starts_[j]);
+    const RelativeMotion m = RelativeMotionOf(pi, starts_[j], kNoShift);
     const double dt =
         LinearMeetingRoot(m.dp_xy, m.dp_z, m.dv_xy, m.dv_z, [reach] { return reach; });
     OfferLinearMeeting(pi, j, Vec3::Zero(), reach, dt, best);
@@ -175,20 +171,18 @@ Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best,
   // predicts it), but never before now.
   const PathStart& start = starts_[i];
   const double t0 = start.t0;
-  int axis = 0, direction = 1;
-  double crossing_dt = kInfinity;
-  {
-    const Mover m0 = BodyMoverOf(i, t0);
-    if (!polyhedra_) {  // a polyhedron meets the walls after its cell crossing is known
-      std::uint8_t wall = 0;
-      const double wall_time = std::max(now_, EventTime(t0, PredictWall(m0, wall)));
-      if (wall_time < event.time) {
-        event = Event{wall_time, EventKind::kWallMeet, wall, kNoIndex, 0};
-      }
+  const Mover m0 = BodyMoverOf(i, t0);
+  if (!polyhedra_) {  // a polyhedron meets the walls after its cell crossing is known
+    std::uint8_t wall = 0;
+    const double wall_time = std::max(now_, EventTime(t0, PredictWall(m0, wall)));
+    if (wall_time < event.time) {
+      event = Event{wall_time, EventKind::kWallMeet, wall, kNoIndex, 0};
     }
-    crossing_dt = grid_ ? grid_->PredictCrossing(m0, grid_->CellOf(i), now_ - t0, axis, direction)
-                        : all_pairs_->PredictCrossing(m0, 0, now_ - t0, axis, direction);
   }
+  int axis = 0, direction = 1;
+  const double crossing_dt =
+      grid_ ? grid_->PredictCrossing(m0, grid_->CellOf(i), now_ - t0, axis, direction)
+            : all_pairs_->PredictCrossing(m0, 0, now_ - t0, axis, direction);
   const double crossing_time = MaxOf(now_, EventTime(t0, crossing_dt));
   if (crossing_time < event.time) {
     event = Event{crossing_time, EventKind::kCellCrossing,
