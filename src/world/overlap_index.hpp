@@ -72,8 +72,8 @@ class OverlapIndex {
       if (wrap_[k] > 0) count[k] = std::min(count[k], wrap_[k]);  // every cell of the axis once
       cells *= static_cast<double>(count[k]);
     }
-    if (cells > static_cast<double>(
-                    points_.size())) {  // a query far larger than the cells: every body is cheaper
+    // A query far larger than the cells: visiting every body is cheaper.
+    if (cells > static_cast<double>(points_.size())) {
       for (std::uint32_t j = 0; j < points_.size(); ++j) fn(j, points_[j], radii_[j]);
       return;
     }
