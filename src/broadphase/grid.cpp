@@ -169,7 +169,7 @@ Grid::Place Grid::Move(std::uint32_t e, int axis, int direction, Vec3& shift) {
 }
 
 void Grid::Permute(const std::vector<std::uint32_t>& old_of_new) {
-  const std::vector<std::uint32_t> old_cell_of = cell_of_;
+  const BigVector<std::uint32_t> old_cell_of = cell_of_;
   std::fill(head_.begin(), head_.end(), kNoIndex);
   std::fill(cell_of_.begin(), cell_of_.end(), kNoIndex);
   // Linking pushes to the front: link in decreasing order so lists run in increasing order.

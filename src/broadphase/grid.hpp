@@ -8,6 +8,7 @@
 
 #include "broadphase/cell_crossing.hpp"
 #include "math/branchless.hpp"
+#include "math/huge_pages.hpp"
 #include "sparse/mover.hpp"
 #include "sparsedyn/types.hpp"
 
@@ -145,8 +146,7 @@ class Grid {
   /// `pending` is the work list (resized to hold every element, so it never grows during a
   /// visit); fn may overwrite its entries up to the one it is called for (they have been read).
   template <typename Fn>
-  void ForEachGatheredAround(const Place& place, std::vector<std::uint32_t>& pending,
-                             Fn&& fn) const {
+  void ForEachGatheredAround(const Place& place, BigVector<std::uint32_t>& pending, Fn&& fn) const {
     VisitGathered<27>(place.cell, around_cells_.data(), pending, fn);
   }
 
@@ -154,7 +154,7 @@ class Grid {
   /// across (axis, direction): what ForEachNewNeighbor visits.
   template <typename Fn>
   void ForEachGatheredNew(const Place& place, int axis, int direction,
-                          std::vector<std::uint32_t>& pending, Fn&& fn) const {
+                          BigVector<std::uint32_t>& pending, Fn&& fn) const {
     VisitGathered<9>(place.cell, new_single_cells_[axis * 2 + (direction > 0 ? 1 : 0)].data(),
                      pending, fn);
   }
@@ -227,7 +227,7 @@ class Grid {
   // data are then fetched together, as a walk along the list would.
   template <int kCount, typename Fn>
   void VisitGathered(std::uint32_t cell, const std::int32_t* offsets,
-                     std::vector<std::uint32_t>& pending, Fn& fn) const {
+                     BigVector<std::uint32_t>& pending, Fn& fn) const {
     // Room for every element and the heads: no check in the loop (a call there would make it
     // keep fn's values in memory).
     if (pending.size() < next_.size() + kCount + 1) pending.resize(next_.size() + kCount + 1);
@@ -320,10 +320,10 @@ class Grid {
   std::array<std::int32_t, 27> around_cells_{};
   std::array<std::array<std::int32_t, 9>, 6> new_single_cells_{};
   bool periodic_ = false;
-  std::vector<std::uint32_t> head_;  // first element of each cell
-  std::vector<std::uint32_t> next_;  // intrusive doubly linked lists of each cell
-  std::vector<std::uint32_t> prev_;
-  std::vector<std::uint32_t> cell_of_;
+  BigVector<std::uint32_t> head_;  // first element of each cell
+  BigVector<std::uint32_t> next_;  // intrusive doubly linked lists of each cell
+  BigVector<std::uint32_t> prev_;
+  BigVector<std::uint32_t> cell_of_;
 };
 
 }  // namespace sparsedyn

@@ -7,6 +7,7 @@
 
 #include "events/event.hpp"
 #include "events/heap_queue.hpp"
+#include "math/huge_pages.hpp"
 #include "sparsedyn/assert.hpp"
 
 namespace sparsedyn {
@@ -151,9 +152,9 @@ class CalendarQueue {
   void NearSiftUp(std::uint32_t at);
   void NearSiftDown(std::uint32_t at);
 
-  std::vector<Entry> entries_;              // per slot
+  BigVector<Entry> entries_;                // per slot
   std::vector<Node> near_;                  // heap: the current bucket and anything earlier
-  std::vector<std::uint32_t> heads_;        // the year: first slot of each bucket's list
+  BigVector<std::uint32_t> heads_;          // the year: first slot of each bucket's list
   std::uint32_t overflow_head_ = kNoIndex;  // entries at or beyond the end of the year
   std::vector<std::uint32_t> scratch_;      // slots, reused by Rollover and Rebuild
   std::vector<double> sample_;              // reused by EstimateWidth

@@ -19,6 +19,7 @@
 #include "events/engagements.hpp"
 #include "events/event.hpp"
 #include "events/heap_queue.hpp"
+#include "math/huge_pages.hpp"
 #include "motion/path.hpp"
 #include "motion/rigid_path.hpp"
 #include "narrow/time_of_contact.hpp"
@@ -55,7 +56,7 @@ class World::Impl {
   double max_penetration_ = 0.0;
 
   // Per-element state (structure of arrays, indexed by body index).
-  std::vector<PathStart> starts_;            // the path of body i is PathOf(i)
+  BigVector<PathStart> starts_;              // the path of body i is PathOf(i)
   std::vector<Vec3> acceleration_;          // per body once own_accelerations_
   Vec3 uniform_acceleration_ = Vec3::Zero();  // gravity: every body's, until one has a thrust
   bool own_accelerations_ = false;
@@ -66,7 +67,7 @@ class World::Impl {
     double friction;
   };
   std::vector<Material> materials_;
-  std::vector<std::uint32_t> material_;     // per body, into materials_
+  BigVector<std::uint32_t> material_;       // per body, into materials_
   std::map<std::array<double, 4>, std::uint32_t> material_index_;  // (r, 1/m, e, mu) -> material
 
   Path PathOf(std::uint32_t i) const {
@@ -111,14 +112,14 @@ class World::Impl {
   /// Elements' spheres that meet become engaged and the detailed phase watches them.
   bool EngagesOnMeet() const { return has_envelopes_ || polyhedra_; }
   std::vector<Envelope> envelope_;          // empty unless some body has an envelope
-  std::vector<std::uint32_t> version_;      // path changes so far
-  std::vector<PendingEvent> event_;         // each element's one outstanding prediction (§4)
+  BigVector<std::uint32_t> version_;        // path changes so far
+  BigVector<PendingEvent> event_;           // each element's one outstanding prediction (§4)
   struct Candidate {                        // the earliest meeting found by the last prediction
     double time = kInfinity;
     std::uint32_t target = kNoIndex;
     std::uint32_t target_version = 0;
   };
-  std::vector<Candidate> candidate_;
+  BigVector<Candidate> candidate_;
   // Internal indices follow space (Reorder); the public BodyId index is the order of AddBody.
   std::vector<std::uint32_t> public_of_;    // internal index -> public index
   std::vector<std::uint32_t> internal_of_;  // public index -> internal index
@@ -132,7 +133,7 @@ class World::Impl {
   double max_radius_ = 0.0;
   std::optional<Grid> grid_;
   std::optional<AllPairs> all_pairs_;
-  std::vector<std::uint32_t> gathered_;  // the Grid gathers' work list, then TestGathered's hits
+  BigVector<std::uint32_t> gathered_;  // the Grid gathers' work list, then TestGathered's hits
   CalendarQueue queue_;             // one slot per element
   CalendarQueue engagement_queue_;  // one slot per engagement
   Engagements engagements_;

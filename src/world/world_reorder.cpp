@@ -14,9 +14,9 @@ namespace {
 // elements across cells, rarely enough that the O(N log N) pass is a small part of the cost.
 constexpr std::uint64_t kEventsPerElementBetweenReorders = 32;
 
-template <typename T>
-void PermuteVector(std::vector<T>& values, const std::vector<std::uint32_t>& old_of_new) {
-  std::vector<T> permuted;
+template <typename Vector>
+void PermuteVector(Vector& values, const std::vector<std::uint32_t>& old_of_new) {
+  Vector permuted;
   permuted.reserve(values.size());  // exact: the run's memory is part of its cost
   for (const std::uint32_t old : old_of_new) permuted.push_back(values[old]);
   values.swap(permuted);

@@ -191,7 +191,7 @@ TEST(Grid, GatheredVisitsAreTheVisits) {
     std::mt19937_64 rng(n);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (std::uint32_t e = 0; e < n; ++e) grid.Insert(e, Vec3(9 * u(rng), 8 * u(rng), 7 * u(rng)));
-    std::vector<std::uint32_t> pending;
+    BigVector<std::uint32_t> pending;
     int interior = 0;
     std::size_t most = 0;
     for (std::uint32_t e = 0; e < n; ++e) {
