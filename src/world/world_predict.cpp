@@ -71,12 +71,14 @@ void World::Impl::ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors
   // ConsiderMeeting (MoverOf + PredictMeeting), with the actor's data read once. Inlined into
   // the cell walk: a call per pair cost a fifth of the test.
   const PathStart pi = starts_[i];
-  const double ri = Radius(i);
+  // One material (a gas): no per-body look-up, which is a cache miss at N = 10^6.
+  const bool one_material = materials_.size() == 1;
+  const double ri = one_material ? materials_[0].radius : Radius(i);
   std::uint64_t tests = 0;
   visit([&](std::uint32_t j, const Vec3& shift) [[gnu::always_inline]] {
     ++tests;
     const RelativeMotion m = RelativeMotionOf(pi, starts_[j], shift);
-    const auto reach = [&] { return ri + Radius(j); };
+    const auto reach = [&] { return ri + (one_material ? ri : Radius(j)); };
     const double dt = LinearMeetingRoot(m.dp_xy, m.dp_z, m.dv_xy, m.dv_z, reach);
     if (dt != kInfinity) OfferLinearMeeting(pi, j, shift, reach(), dt, best);
   });
@@ -92,7 +94,7 @@ void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather
   // and certified after the visit, so that the visit makes no call and keeps i's data in
   // registers. i itself is among them: with dp = dv = 0 it does not approach.
   const PathStart pi = starts_[i];
-  const double ri = Radius(i);
+  const double ri = kOneMaterial ? materials_[0].radius : Radius(i);
   const Vec3 kNoShift = Vec3::Zero();  // interior cells: no image shift
   const PathStart* starts = starts_.data();
   const std::uint32_t* material = material_.data();
@@ -101,7 +103,7 @@ void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather
   gather([&](std::uint32_t j) [[gnu::always_inline]] {
     ++visited;
     self += j == i ? 1u : 0u;
-    // One material (a gas): no per-pair look-up, a cache miss per pair at N = 10^6.
+    // One material (a gas): no per-body look-up, a cache miss per pair at N = 10^6.
     const double reach = ri + (kOneMaterial ? ri : materials[material[j]].radius);
     const RelativeMotion m = RelativeMotionOf(pi, starts[j], kNoShift);
     gathered_[hits] = j;  // an entry the gather is done with (hits < visited)
@@ -110,7 +112,7 @@ void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather
   stats_.pair_tests += visited - self;
   for (std::uint32_t h = 0; h < hits; ++h) {
     const std::uint32_t j = gathered_[h];
-    const double reach = ri + Radius(j);
+    const double reach = ri + (kOneMaterial ? ri : Radius(j));
     const RelativeMotion m = RelativeMotionOf(pi, starts_[j], kNoShift);
     const double dt =
         LinearMeetingRoot(m.dp_xy, m.dp_z, m.dv_xy, m.dv_z, [reach] { return reach; });
