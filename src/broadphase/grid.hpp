@@ -159,6 +159,41 @@ class Grid {
                      pending, fn);
   }
 
+  // The look-ahead of a gas beyond the caches (World::Impl::FetchAhead). Fetches only, for
+  // guesses: any cell index is accepted (wrapped into the grid, a wrong cell near the outer
+  // layer costs a useless fetch).
+
+  /// Fetches e's own entries, which a Move of e reads.
+  void FetchElement(std::uint32_t e) const {
+    __builtin_prefetch(&cell_of_[e]);
+    __builtin_prefetch(&next_[e]);
+    __builtin_prefetch(&prev_[e]);
+  }
+  /// Fetches the head rows of the 27 cells around `cell`.
+  void FetchAround(std::uint32_t cell) const {
+    const auto size = static_cast<std::uint32_t>(head_.size());
+    for (const std::int32_t offset : around_rows_) {
+      __builtin_prefetch(&head_[(cell + static_cast<std::uint32_t>(offset)) % size]);
+    }
+  }
+  /// Once those heads are at hand: calls fn(j) for the first element j of each non-empty cell
+  /// of the 27 around `cell` (for the caller to fetch its data) and fetches j's list successor.
+  template <typename Fn>
+  void FetchListsAround(std::uint32_t cell, Fn&& fn) const {
+    const auto size = static_cast<std::uint32_t>(head_.size());
+    for (const std::int32_t offset : around_cells_) {
+      const std::uint32_t j = head_[(cell + static_cast<std::uint32_t>(offset)) % size];
+      if (j == kNoIndex) continue;
+      __builtin_prefetch(&next_[j]);
+      fn(j);
+    }
+  }
+  /// The cell across (axis, direction) from `cell`, wrapped into the grid as an index only.
+  std::uint32_t CellAcross(std::uint32_t cell, int axis, int direction) const {
+    const auto size = static_cast<std::uint32_t>(head_.size());
+    return (cell + static_cast<std::uint32_t>(direction) * stride_[axis]) % size;
+  }
+
   /// The elements renumbered: element `old_of_new[e]` becomes element e, keeping its cell.
   /// Each cell's list is rebuilt in increasing element order.
   void Permute(const std::vector<std::uint32_t>& old_of_new);

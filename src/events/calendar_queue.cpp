@@ -2,6 +2,7 @@
 #include "events/calendar_queue.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 
@@ -116,6 +117,30 @@ void CalendarQueue::Set(std::uint32_t slot, double time, EventKind kind) {
   entries_[slot].kind = kind;
   Link(slot, where);
   if (near_.empty()) Refill();
+}
+
+int CalendarQueue::Upcoming(std::uint32_t* out, int count) const {
+  // The heap's entries after its root, in order: the k-th entry after the root is on one of
+  // the k levels below it, so the three levels (14 entries) hold the next three for certain.
+  std::array<Node, 14> near{};
+  std::size_t taken = 0;
+  for (std::size_t at = 1; at < near_.size() && taken < near.size(); ++at) {
+    // Insertion into the sorted prefix (std::sort here draws a false -Warray-bounds).
+    std::size_t k = taken++;
+    for (; k > 0 && Less(near_[at], near[k - 1]); --k) near[k] = near[k - 1];
+    near[k] = near_[at];
+  }
+  int written = 0;
+  for (std::size_t k = 0; k < taken && written < count; ++k) out[written++] = SlotOf(near[k]);
+  // Then the next few buckets' lists, unsorted. The refills fetch their first entries ahead.
+  const auto buckets = static_cast<std::uint32_t>(heads_.size());
+  for (std::uint32_t b = current_ + 1; b < buckets && b <= current_ + 4 && written < count; ++b) {
+    for (std::uint32_t slot = heads_[b]; slot != kNoIndex && written < count;
+         slot = entries_[slot].next) {
+      out[written++] = slot;
+    }
+  }
+  return written;
 }
 
 void CalendarQueue::Erase(std::uint32_t slot) {

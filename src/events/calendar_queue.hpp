@@ -67,6 +67,14 @@ class CalendarQueue {
             static_cast<std::uint32_t>(near_[0].order)};
   }
 
+  /// Up to `count` slots likely to be the next heads after the current one, earliest first as
+  /// far as the queue knows it cheaply (the current bucket's heap in order, then the next
+  /// non-empty buckets' lists in list order); for fetching their data ahead. Not exact: each
+  /// event's handling may move entries. Returns how many it wrote.
+  int Upcoming(std::uint32_t* out, int count) const;
+  /// Fetches `slot`'s entry into the caches ahead of a Set.
+  void Prefetch(std::uint32_t slot) const { __builtin_prefetch(&entries_[slot]); }
+
   /// Inserts the slot or moves its entry to the new key. `time` must not be NaN.
   void Set(std::uint32_t slot, double time, EventKind kind);
 

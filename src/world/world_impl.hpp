@@ -129,7 +129,9 @@ class World::Impl {
   bool has_envelopes_ = false;
   bool straight_lines_ = false;  // no envelopes and no acceleration: the fast meeting test
   bool batch_tests_ = false;     // straight lines, few enough elements: TestGathered
+  bool fetch_ahead_ = false;     // a gas on a grid beyond the caches: FetchAhead
   static constexpr std::uint32_t kBatchTestMaxElements = 1u << 18;
+  static constexpr std::uint32_t kFetchAheadMinElements = 40000;
   double max_radius_ = 0.0;
   std::optional<Grid> grid_;
   std::optional<AllPairs> all_pairs_;
@@ -203,6 +205,10 @@ class World::Impl {
 
   // --- handlers (world_loop.cpp) ---
   void Dispatch(const QueueTop& top, bool engagement);
+  // The look-ahead: fetches what the next events will read while this one is handled.
+  void FetchAhead() const;
+  void FetchElement(std::uint32_t e) const;
+  std::uint32_t CellAhead(std::uint32_t e) const;
   void HandleSphereMeet(std::uint32_t i);
   void HandleWallMeet(std::uint32_t i);
   void HandleCellCrossing(std::uint32_t i);

@@ -49,9 +49,54 @@ Status World::Impl::AdvanceTo(double t) {
     now_ = top.time;
     Dispatch(top, engagement);
     MaybeReorder();
+    if (fetch_ahead_) FetchAhead();
   }
   now_ = std::max(now_, t);
   return Status::Ok();
+}
+
+void World::Impl::FetchElement(std::uint32_t e) const {
+  const auto* start = reinterpret_cast<const char*>(&starts_[e]);
+  __builtin_prefetch(start);
+  __builtin_prefetch(start + sizeof(PathStart) - 1);
+  __builtin_prefetch(&event_[e]);
+  __builtin_prefetch(&candidate_[e]);
+  __builtin_prefetch(&version_[e]);
+  grid_->FetchElement(e);
+  queue_.Prefetch(e);
+}
+
+std::uint32_t World::Impl::CellAhead(std::uint32_t e) const {
+  // The cell e's next event will scan around: the one it crosses into, or its own.
+  const PendingEvent& event = event_[e];
+  const std::uint32_t cell = grid_->CellOf(e);
+  if (event.kind != EventKind::kCellCrossing) return cell;
+  return grid_->CellAcross(cell, event.aux / 2, 2 * (event.aux & 1) - 1);
+}
+
+void World::Impl::FetchAhead() const {
+  // A pipeline over the coming events, so that each step's cache misses have events' time to
+  // arrive before the step that needs them: the fourth-next element's own entries; the
+  // third-next's cell heads and its meeting partner's entries (its event, fetched one event
+  // earlier, names the partner); the second-next's neighbours' path starts (which need those
+  // heads). The queue only guesses the order; a wrong guess costs the fetches. One event
+  // further ahead measured the same, one event less 4% slower at N = 10^6; the partner's cell
+  // heads as well, or the partner's entries one stage earlier (a wait for the event), slower.
+  std::uint32_t next[4];
+  const int count = queue_.Upcoming(next, 4);
+  if (count >= 2) {
+    grid_->FetchListsAround(CellAhead(next[1]), [this](std::uint32_t j) {
+      const auto* start = reinterpret_cast<const char*>(&starts_[j]);
+      __builtin_prefetch(start);
+      __builtin_prefetch(start + sizeof(PathStart) - 1);
+    });
+  }
+  if (count >= 3) {
+    grid_->FetchAround(CellAhead(next[2]));
+    const PendingEvent& event = event_[next[2]];
+    if (event.kind == EventKind::kSphereMeet) FetchElement(event.target);
+  }
+  if (count >= 4) FetchElement(next[3]);
 }
 
 void World::Impl::Dispatch(const QueueTop& top, bool engagement) {

@@ -354,5 +354,42 @@ TEST(CalendarQueue, ResizesWithSizeAndAdaptsWidthToSpacing) {
   EXPECT_TRUE(queue.Empty());
 }
 
+// Upcoming guesses the next heads for the look-ahead: never the head itself, no slot twice,
+// only slots with entries, and in a gas-like stream (each head moved to a later time) the next
+// head is its first guess most of the time.
+TEST(CalendarQueue, UpcomingGuessesTheNextHeads) {
+  CalendarQueue queue;
+  std::mt19937_64 rng(2718);
+  std::exponential_distribution<double> gap(1.0);
+  constexpr std::uint32_t kSlots = 1 << 12;
+  std::uniform_real_distribution<double> start(0.0, kSlots);
+  for (std::uint32_t slot = 0; slot < kSlots; ++slot) {
+    queue.Set(slot, start(rng), EventKind::kSphereMeet);  // about one event per unit of time
+  }
+  int right = 0;
+  constexpr int kEvents = 20000;
+  for (int e = 0; e < kEvents; ++e) {
+    const QueueTop top = queue.Top();
+    std::uint32_t next[4];
+    const int count = queue.Upcoming(next, 4);
+    ASSERT_GE(count, 0);  // none when the next buckets are empty
+    ASSERT_LE(count, 4);
+    for (int k = 0; k < count; ++k) {
+      EXPECT_NE(next[k], top.slot);
+      EXPECT_TRUE(queue.Contains(next[k]));
+      for (int m = 0; m < k; ++m) EXPECT_NE(next[k], next[m]);
+    }
+    queue.Set(top.slot, top.time + gap(rng) * kSlots, EventKind::kSphereMeet);
+    right += count > 0 && queue.Top().slot == next[0] ? 1 : 0;
+  }
+  EXPECT_GT(right, kEvents * 7 / 10) << "next head guessed " << right << " times in " << kEvents;
+
+  // A queue of one entry has nothing upcoming.
+  CalendarQueue single;
+  single.Set(5, 1.0, EventKind::kCellCrossing);
+  std::uint32_t none[2];
+  EXPECT_EQ(single.Upcoming(none, 2), 0);
+}
+
 }  // namespace
 }  // namespace sparsedyn
