@@ -95,6 +95,11 @@ void World::Impl::FetchAhead() const {
     grid_->FetchAround(CellAhead(next[2]));
     const PendingEvent& event = event_[next[2]];
     if (event.kind == EventKind::kSphereMeet) FetchElement(event.target);
+    // A crossing checks whether its kept meeting's target changed path.
+    const std::uint32_t kept = candidate_[next[2]].target;
+    if (event.kind == EventKind::kCellCrossing && kept != kNoIndex) {
+      __builtin_prefetch(&version_[kept]);
+    }
   }
   if (count >= 4) FetchElement(next[3]);
 }
