@@ -55,10 +55,15 @@ Status World::Impl::AdvanceTo(double t) {
   return Status::Ok();
 }
 
-void World::Impl::FetchElement(std::uint32_t e) const {
+void World::Impl::FetchStart(std::uint32_t e) const {
+  // Both ends: a 56-byte record spans two cache lines 7 times in 8.
   const auto* start = reinterpret_cast<const char*>(&starts_[e]);
   __builtin_prefetch(start);
   __builtin_prefetch(start + sizeof(PathStart) - 1);
+}
+
+void World::Impl::FetchElement(std::uint32_t e) const {
+  FetchStart(e);
   __builtin_prefetch(&event_[e]);
   __builtin_prefetch(&candidate_[e]);
   __builtin_prefetch(&version_[e]);
@@ -85,20 +90,16 @@ void World::Impl::FetchAhead() const {
   std::uint32_t next[4];
   const int count = queue_.Upcoming(next, 4);
   if (count >= 2) {
-    grid_->FetchListsAround(CellAhead(next[1]), [this](std::uint32_t j) {
-      const auto* start = reinterpret_cast<const char*>(&starts_[j]);
-      __builtin_prefetch(start);
-      __builtin_prefetch(start + sizeof(PathStart) - 1);
-    });
+    grid_->FetchListsAround(CellAhead(next[1]), [this](std::uint32_t j) { FetchStart(j); });
   }
   if (count >= 3) {
     grid_->FetchAround(CellAhead(next[2]));
     const PendingEvent& event = event_[next[2]];
     if (event.kind == EventKind::kSphereMeet) FetchElement(event.target);
-    // A crossing checks whether its kept meeting's target changed path.
-    const std::uint32_t kept = candidate_[next[2]].target;
-    if (event.kind == EventKind::kCellCrossing && kept != kNoIndex) {
-      __builtin_prefetch(&version_[kept]);
+    if (event.kind == EventKind::kCellCrossing) {
+      // A crossing checks whether its kept meeting's target changed path.
+      const std::uint32_t kept = candidate_[next[2]].target;
+      if (kept != kNoIndex) __builtin_prefetch(&version_[kept]);
     }
   }
   if (count >= 4) FetchElement(next[3]);
