@@ -35,17 +35,4 @@ struct Event {
   std::uint32_t target_version = 0;   // the target's version when predicted
 };
 
-/// What an element keeps of its queued Event: everything but the time, which the queue holds
-/// (12 bytes instead of 24 per element).
-struct PendingEvent {
-  std::uint32_t target = kNoIndex;
-  std::uint32_t target_version = 0;
-  EventKind kind = EventKind::kNone;
-  std::uint8_t aux = 0;
-
-  PendingEvent() = default;
-  explicit PendingEvent(const Event& e)
-      : target(e.target), target_version(e.target_version), kind(e.kind), aux(e.aux) {}
-};
-
 }  // namespace sparsedyn

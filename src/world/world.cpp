@@ -227,8 +227,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   version_.push_back(0);
   public_of_.push_back(static_cast<std::uint32_t>(index));
   internal_of_.push_back(static_cast<std::uint32_t>(index));
-  event_.emplace_back();
-  candidate_.emplace_back();
+  prediction_.emplace_back();
   const bool larger = radius > max_radius_;
   max_radius_ = std::max(max_radius_, radius);
   if (started_) {
@@ -410,9 +409,8 @@ std::size_t World::Impl::MemoryBytes() const {
       material_.capacity() * sizeof(std::uint32_t) + envelope_.capacity() * sizeof(Envelope) +
       (version_.capacity() + public_of_.capacity() + internal_of_.capacity()) *
           sizeof(std::uint32_t) +
-      event_.capacity() * sizeof(PendingEvent) + candidate_.capacity() * sizeof(Candidate) +
-      queue_.MemoryBytes() + engagement_queue_.MemoryBytes() +
-      gathered_.capacity() * sizeof(std::uint32_t);
+      prediction_.capacity() * sizeof(Prediction) + queue_.MemoryBytes() +
+      engagement_queue_.MemoryBytes() + gathered_.capacity() * sizeof(std::uint32_t);
   bytes += shape_.capacity() * sizeof(std::uint32_t) + q0_.capacity() * sizeof(Eigen::Quaterniond) +
            omega_.capacity() * sizeof(Vec3) + spin_radius_.capacity() * sizeof(double);
   if (grid_) bytes += grid_->MemoryBytes();

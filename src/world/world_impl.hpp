@@ -113,13 +113,19 @@ class World::Impl {
   bool EngagesOnMeet() const { return has_envelopes_ || polyhedra_; }
   std::vector<Envelope> envelope_;          // empty unless some body has an envelope
   BigVector<std::uint32_t> version_;        // path changes so far
-  BigVector<PendingEvent> event_;           // each element's one outstanding prediction (§4)
   struct Candidate {                        // the earliest meeting found by the last prediction
     double time = kInfinity;
     std::uint32_t target = kNoIndex;
     std::uint32_t target_version = 0;
   };
-  BigVector<Candidate> candidate_;
+  // Each element's one outstanding prediction (§4): the kind of its queued event (the queue
+  // holds the time) and the meeting its last prediction found, which a crossing keeps and a
+  // kSphereMeet event is with. One 24-byte record, as every event reads both.
+  struct Prediction : Candidate {
+    EventKind kind = EventKind::kNone;
+    std::uint8_t aux = 0;  // kWallMeet: the wall; kCellCrossing: axis * 2 + (1 if upwards)
+  };
+  BigVector<Prediction> prediction_;
   // Internal indices follow space (Reorder); the public BodyId index is the order of AddBody.
   std::vector<std::uint32_t> public_of_;    // internal index -> public index
   std::vector<std::uint32_t> internal_of_;  // public index -> internal index

@@ -64,8 +64,7 @@ void World::Impl::FetchStart(std::uint32_t e) const {
 
 void World::Impl::FetchElement(std::uint32_t e) const {
   FetchStart(e);
-  __builtin_prefetch(&event_[e]);
-  __builtin_prefetch(&candidate_[e]);
+  __builtin_prefetch(&prediction_[e]);
   __builtin_prefetch(&version_[e]);
   grid_->FetchElement(e);
   queue_.Prefetch(e);
@@ -73,7 +72,7 @@ void World::Impl::FetchElement(std::uint32_t e) const {
 
 std::uint32_t World::Impl::CellAhead(std::uint32_t e) const {
   // The cell e's next event will scan around: the one it crosses into, or its own.
-  const PendingEvent& event = event_[e];
+  const Prediction& event = prediction_[e];
   const std::uint32_t cell = grid_->CellOf(e);
   if (event.kind != EventKind::kCellCrossing) return cell;
   return grid_->CellAcross(cell, event.aux / 2, 2 * (event.aux & 1) - 1);
@@ -94,11 +93,11 @@ void World::Impl::FetchAhead() const {
   }
   if (count >= 3) {
     grid_->FetchAround(CellAhead(next[2]));
-    const PendingEvent& event = event_[next[2]];
+    const Prediction& event = prediction_[next[2]];
     if (event.kind == EventKind::kSphereMeet) FetchElement(event.target);
     if (event.kind == EventKind::kCellCrossing) {
       // A crossing checks whether its kept meeting's target changed path.
-      const std::uint32_t kept = candidate_[next[2]].target;
+      const std::uint32_t kept = event.target;
       if (kept != kNoIndex) __builtin_prefetch(&version_[kept]);
     }
   }
@@ -129,7 +128,7 @@ void World::Impl::Dispatch(const QueueTop& top, bool engagement) {
 }
 
 void World::Impl::HandleCellCrossing(std::uint32_t i) {
-  const PendingEvent event = event_[i];
+  const Prediction event = prediction_[i];
   const int axis = event.aux / 2;
   const int direction = 2 * (event.aux & 1) - 1;  // +1 or -1 (arithmetic: no branch)
   // A periodic wrap shifts the position: the same motion, seen in the box.
@@ -156,7 +155,7 @@ bool World::Impl::TouchingAndApproaching(std::uint32_t i, std::uint32_t j, Vec3&
 }
 
 void World::Impl::HandleSphereMeet(std::uint32_t i) {
-  const PendingEvent event = event_[i];
+  const Prediction event = prediction_[i];
   const std::uint32_t j = event.target;
   if (version_[j] != event.target_version) {
     // Target-absent (§4.2): the target changed path since; the actor looks again.
@@ -219,7 +218,7 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
                                  normal, result.impulse});
   }
   // j's own prediction is superseded: the actor-absent event of §4.2, removed in place.
-  const PendingEvent& pending = event_[j];
+  const Prediction& pending = prediction_[j];
   if (pending.kind != EventKind::kNone &&
       !(pending.kind == EventKind::kSphereMeet && pending.target == i)) {
     ++stats_.stale_actor_absent;
@@ -235,7 +234,7 @@ void World::Impl::HandleWallMeet(std::uint32_t i) {
     HandlePolyhedronWall(i);
     return;
   }
-  const PendingEvent event = event_[i];
+  const Prediction event = prediction_[i];
   const WallPlane plane = BoxWall(settings_.container, event.aux);
   const Vec3 p = PathOf(i).PositionAt(now_);
   const Vec3 v = PathOf(i).VelocityAt(now_);

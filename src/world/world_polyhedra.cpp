@@ -271,7 +271,7 @@ bool World::Impl::CollidePolyhedra(std::uint32_t a, std::uint32_t b,
   }
   // Both bodies' element predictions are superseded (actor-absent, §4.2), replaced in place.
   for (const std::uint32_t body : {a, b}) {
-    if (event_[body].kind != EventKind::kNone) ++stats_.stale_actor_absent;
+    if (prediction_[body].kind != EventKind::kNone) ++stats_.stale_actor_absent;
   }
   PredictFull(a);
   PredictFull(b);
@@ -349,7 +349,7 @@ Event World::Impl::PredictPolyhedronWalls(std::uint32_t i, Event event) {
 }
 
 void World::Impl::HandlePolyhedronWall(std::uint32_t i) {
-  const int w = event_[i].aux;
+  const int w = prediction_[i].aux;
   const WallPlane plane = BoxWall(settings_.container, w);
   const RigidPath path = RigidPathOf(i);
   const Pose pose = path.PoseAt(now_);

@@ -157,7 +157,7 @@ double World::Impl::PredictWall(const Mover& mi, std::uint8_t& wall) const {
 
 Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best,
                                     const Grid::Place* place) {
-  candidate_[i] = best;
+  static_cast<Candidate&>(prediction_[i]) = best;  // the kind is set by Schedule
   if (straight_lines_ && grid_ && settings_.container.kind != Container::Kind::kWalledBox) {
     return FinishLinearPrediction(i, best, *place);
   }
@@ -225,7 +225,8 @@ Event World::Impl::FinishLinearPrediction(std::uint32_t i, const Candidate& best
 
 void World::Impl::Schedule(std::uint32_t i, const Event& event) {
   const PhaseTimer timer(settings_.profile_phases, stats_.seconds_queue);
-  event_[i] = PendingEvent(event);
+  prediction_[i].kind = event.kind;
+  prediction_[i].aux = event.aux;
   if (event.kind == EventKind::kNone) {
     queue_.Erase(i);
   } else {
@@ -271,7 +272,7 @@ void World::Impl::PredictAfterCrossing(std::uint32_t i, const Grid::Place& place
   // The meeting found by the last full prediction still bounds every old neighbour's meeting
   // as long as its target has not changed path; then only the 9 new cells need a look
   // (docs/sparse-phase.md#cell-crossings). Otherwise predict in full.
-  const Candidate& kept = candidate_[i];
+  const Candidate& kept = prediction_[i];
   const bool kept_valid = kept.time == kInfinity || version_[kept.target] == kept.target_version;
   if (!kept_valid) {
     PredictFull(i);

@@ -46,7 +46,7 @@ void World::Impl::Reorder() {
 
   std::vector<double> time(n, kInfinity);  // the queue holds the event times
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (event_[i].kind != EventKind::kNone) time[i] = queue_.TimeOf(i);
+    if (prediction_[i].kind != EventKind::kNone) time[i] = queue_.TimeOf(i);
   }
   PermuteVector(time, old_of_new);
   PermuteVector(starts_, old_of_new);
@@ -59,13 +59,12 @@ void World::Impl::Reorder() {
     PermuteVector(spin_radius_, old_of_new);
   }
   PermuteVector(version_, old_of_new);
-  PermuteVector(event_, old_of_new);
-  PermuteVector(candidate_, old_of_new);
+  PermuteVector(prediction_, old_of_new);
   PermuteVector(public_of_, old_of_new);
   for (std::uint32_t e = 0; e < n; ++e) {
     internal_of_[public_of_[e]] = e;
-    if (event_[e].kind == EventKind::kSphereMeet) event_[e].target = new_of_old[event_[e].target];
-    if (candidate_[e].target != kNoIndex) candidate_[e].target = new_of_old[candidate_[e].target];
+    if (prediction_[e].target != kNoIndex)
+      prediction_[e].target = new_of_old[prediction_[e].target];
   }
   grid_->Permute(old_of_new);
   engagements_.Renumber(new_of_old);
@@ -73,7 +72,7 @@ void World::Impl::Reorder() {
   // which is itself a deterministic function of the run).
   queue_.Clear();
   for (std::uint32_t e = 0; e < n; ++e) {
-    if (event_[e].kind != EventKind::kNone) queue_.Set(e, time[e], event_[e].kind);
+    if (prediction_[e].kind != EventKind::kNone) queue_.Set(e, time[e], prediction_[e].kind);
   }
 }
 
