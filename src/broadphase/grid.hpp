@@ -147,7 +147,7 @@ class Grid {
   /// visit); fn may overwrite its entries up to the one it is called for (they have been read).
   template <typename Fn>
   void ForEachGatheredAround(const Place& place, BigVector<std::uint32_t>& pending, Fn&& fn) const {
-    VisitGathered<27>(place.cell, around_cells_.data(), pending, fn);
+    VisitGathered<9, 3>(place.cell, around_rows_.data(), pending, fn);
   }
 
   /// ForEachGatheredAround for the 9 cells that became adjacent to an interior `place` entered
@@ -155,8 +155,12 @@ class Grid {
   template <typename Fn>
   void ForEachGatheredNew(const Place& place, int axis, int direction,
                           BigVector<std::uint32_t>& pending, Fn&& fn) const {
-    VisitGathered<9>(place.cell, new_single_cells_[axis * 2 + (direction > 0 ? 1 : 0)].data(),
-                     pending, fn);
+    const int side = axis * 2 + (direction > 0 ? 1 : 0);
+    if (axis == 0) {
+      VisitGathered<9, 1>(place.cell, new_single_cells_[side].data(), pending, fn);
+    } else {
+      VisitGathered<3, 3>(place.cell, new_cells_[side].data(), pending, fn);  // rows along x
+    }
   }
 
   // The look-ahead of a gas beyond the caches (World::Impl::FetchAhead). Fetches only, for
@@ -256,22 +260,27 @@ class Grid {
     }
     for (int d = -1; d <= 1; ++d) Single(axis, at + d, span);
   }
-  // The cells cell + offsets[c] (c < kCount): their heads are written to `pending` first, each
-  // counted only if not empty (a select, not a branch); then each pending element, in turn,
-  // has its list successor appended in the same way and is handed to fn. Its successor and its
-  // data are then fetched together, as a walk along the list would.
-  template <int kCount, typename Fn>
+  // The runs of kRun consecutive cells from cell + offsets[r] on (r < kRuns): their heads are
+  // written to `pending` first, each counted only if not empty (a select, not a branch; a run
+  // of three is read as one row, a third of the address work); then each pending element, in
+  // turn, has its list successor appended in the same way and is handed to fn. Its successor
+  // and its data are then fetched together, as a walk along the list would.
+  template <int kRuns, int kRun, typename Fn>
   void VisitGathered(std::uint32_t cell, const std::int32_t* offsets,
                      BigVector<std::uint32_t>& pending, Fn& fn) const {
     // Room for every element and the heads: no check in the loop (a call there would make it
     // keep fn's values in memory).
+    constexpr int kCount = kRuns * kRun;
     if (pending.size() < next_.size() + kCount + 1) pending.resize(next_.size() + kCount + 1);
     std::uint32_t* buffer = pending.data();
     std::uint32_t n = 0;
-    for (int c = 0; c < kCount; ++c) {
-      const std::uint32_t h = head_[cell + static_cast<std::uint32_t>(offsets[c])];
-      buffer[n] = h;
-      n += h != kNoIndex ? 1u : 0u;
+    for (int r = 0; r < kRuns; ++r) {
+      const std::uint32_t* heads = &head_[cell + static_cast<std::uint32_t>(offsets[r])];
+      for (int c = 0; c < kRun; ++c) {
+        const std::uint32_t h = heads[c];
+        buffer[n] = h;
+        n += h != kNoIndex ? 1u : 0u;
+      }
     }
     for (std::uint32_t k = 0; k < n; ++k) {
       const std::uint32_t j = buffer[k];
