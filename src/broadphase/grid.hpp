@@ -61,22 +61,24 @@ class Grid {
   /// predicted after every event of a gas.
   double PredictLinearCrossing(const Vec3& p0, const Vec3& v, const Place& place, double min_dt,
                                int& axis, int& direction) const {
-    double best = kInfinity;
-    int best_axis = 0, best_direction = 1;
+    std::array<double, 3> dt;
+    std::uint32_t ups = 0;  // bit k: moving up along k
     for (int k = 0; k < 3; ++k) {
       const bool up = v[k] > 0;
       const bool moving = up | (v[k] < 0);  // at rest along k (or NaN): never leaves
       const double face = faces_[k][static_cast<std::size_t>(place.at[k] + (up ? 1 : 0))];
-      const double exit = MaxOf(min_dt, (face - p0[k]) / v[k]);
-      const double dt = Select(moving, exit, kInfinity);
-      // Ties go to the lower axis. The integer selects as masks: GCC branches on them too.
-      const int earlier = -static_cast<int>(dt < best);
-      best = MinOf(dt, best);
-      best_axis ^= (best_axis ^ k) & earlier;
-      best_direction ^= (best_direction ^ (up ? 1 : -1)) & earlier;
+      dt[k] = Select(moving, MaxOf(min_dt, (face - p0[k]) / v[k]), kInfinity);
+      ups |= static_cast<std::uint32_t>(up) << k;
     }
-    axis = best_axis;
-    direction = best_direction;
+    // The earliest; ties go to the lower axis; never leaving: axis 0, direction +1 (the general
+    // PredictCrossing's answers). Integer selects as arithmetic: GCC branches on `?:` here.
+    const double best = MinOf(dt[0], MinOf(dt[1], dt[2]));
+    const auto not0 = static_cast<std::uint32_t>(dt[0] != best);
+    const auto not1 = static_cast<std::uint32_t>(dt[1] != best);
+    const std::uint32_t k = not0 * (1 + not1);  // 0, 1 or 2
+    const std::uint32_t leaves = static_cast<std::uint32_t>(best != kInfinity);
+    axis = static_cast<int>(k * leaves);
+    direction = static_cast<int>(((ups >> k) & 1u) | (1u - leaves)) * 2 - 1;
     return best;
   }
 
