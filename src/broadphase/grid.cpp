@@ -56,18 +56,6 @@ Grid::Grid(const Config& config, std::uint32_t element_capacity)
       for (int dx = -1; dx <= 1; ++dx, ++c) around_cells_[c] = dz * sz + dy * sy + dx;
     }
   }
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::array<std::int32_t, 3> step{1, sy, sz};
-    const std::int32_t u = step[(axis + 1) % 3], w = step[(axis + 2) % 3];
-    for (int direction = -1; direction <= 1; direction += 2) {
-      const int side = axis * 2 + (direction > 0 ? 1 : 0);
-      for (int a = -1, c = 0; a <= 1; ++a) {
-        for (int b = -1; b <= 1; ++b, ++c) {
-          new_single_cells_[side][c] = direction * step[axis] + a * u + b * w;
-        }
-      }
-    }
-  }
   for (int direction = -1; direction <= 1; direction += 2) {
     const int side = direction > 0 ? 1 : 0;
     for (int a = -1, r = 0; a <= 1; ++a) {

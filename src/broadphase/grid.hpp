@@ -159,7 +159,7 @@ class Grid {
                           BigVector<std::uint32_t>& pending, Fn&& fn) const {
     const int side = axis * 2 + (direction > 0 ? 1 : 0);
     if (axis == 0) {
-      VisitGathered<9, 1>(place.cell, new_single_cells_[side].data(), pending, fn);
+      VisitGathered<9, 1>(place.cell, new_cells_[side].data(), pending, fn);  // single cells
     } else {
       VisitGathered<3, 3>(place.cell, new_cells_[side].data(), pending, fn);  // rows along x
     }
@@ -361,10 +361,8 @@ class Grid {
   // direction > 0)) the 9 cells that became adjacent: 9 single cells for axis x, else 3 rows.
   std::array<std::int32_t, 9> around_rows_{};
   std::array<std::array<std::int32_t, 9>, 6> new_cells_{};
-  // The same cells one by one, for Gather: the 27 around a cell and the 9 new ones of each
-  // crossing.
+  // The 27 around a cell one by one, for the look-ahead.
   std::array<std::int32_t, 27> around_cells_{};
-  std::array<std::array<std::int32_t, 9>, 6> new_single_cells_{};
   bool periodic_ = false;
   BigVector<std::uint32_t> head_;  // first element of each cell
   BigVector<std::uint32_t> next_;  // intrusive doubly linked lists of each cell

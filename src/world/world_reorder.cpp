@@ -63,8 +63,8 @@ void World::Impl::Reorder() {
   PermuteVector(public_of_, old_of_new);
   for (std::uint32_t e = 0; e < n; ++e) {
     internal_of_[public_of_[e]] = e;
-    if (prediction_[e].target != kNoIndex)
-      prediction_[e].target = new_of_old[prediction_[e].target];
+    std::uint32_t& target = prediction_[e].target;
+    if (target != kNoIndex) target = new_of_old[target];
   }
   grid_->Permute(old_of_new);
   engagements_.Renumber(new_of_old);
