@@ -65,9 +65,8 @@ Grid::Grid(const Config& config, std::uint32_t element_capacity)
     }
   }
   head_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2], kNoIndex);
-  next_.assign(element_capacity, kNoIndex);
-  prev_.assign(element_capacity, kNoIndex);
-  cell_of_.assign(element_capacity, kNoIndex);
+  own_links_.assign(element_capacity, GridLinks{});
+  UseLinks(own_links_.data(), 3, own_links_.size());
 }
 
 std::uint32_t Grid::CellAt(const Vec3& p) const {
@@ -80,33 +79,33 @@ std::uint32_t Grid::CellAt(const Vec3& p) const {
 }
 
 void Grid::Insert(std::uint32_t e, const Vec3& p) {
-  if (e >= cell_of_.size()) {
-    const std::size_t size = std::max<std::size_t>(e + 1, cell_of_.size() * 2);
-    next_.resize(size, kNoIndex);
-    prev_.resize(size, kNoIndex);
-    cell_of_.resize(size, kNoIndex);
+  if (e >= elements_) {
+    SPARSEDYN_ASSERT(links_ == reinterpret_cast<char*>(own_links_.data()),
+                     "Grid::Insert beyond the owner's links");
+    const std::size_t size = std::max<std::size_t>(e + 1, elements_ * 2);
+    own_links_.resize(size, GridLinks{});
+    UseLinks(own_links_.data(), 3, own_links_.size());
   }
   Link(e, CellAt(p));
 }
 
 void Grid::Link(std::uint32_t e, std::uint32_t cell) {
-  cell_of_[e] = cell;
-  prev_[e] = kNoIndex;
-  next_[e] = head_[cell];
-  if (head_[cell] != kNoIndex) prev_[head_[cell]] = e;
+  GridLinks& links = Links(e);
+  links.cell = cell;
+  links.next = head_[cell];
   head_[cell] = e;
 }
 
 void Grid::Remove(std::uint32_t e) {
-  const std::uint32_t cell = cell_of_[e];
-  SPARSEDYN_ASSERT(cell != kNoIndex, "Grid::Remove of an element not in the grid");
-  if (prev_[e] != kNoIndex) {
-    next_[prev_[e]] = next_[e];
-  } else {
-    head_[cell] = next_[e];
+  GridLinks& links = Links(e);
+  SPARSEDYN_ASSERT(links.cell != kNoIndex, "Grid::Remove of an element not in the grid");
+  std::uint32_t* at = &head_[links.cell];  // the link that names e
+  while (*at != e) {
+    SPARSEDYN_ASSERT(*at != kNoIndex, "Grid::Remove: the element is not in its cell's list");
+    at = &Links(*at).next;
   }
-  if (next_[e] != kNoIndex) prev_[next_[e]] = prev_[e];
-  cell_of_[e] = kNoIndex;
+  *at = links.next;
+  links.cell = kNoIndex;
 }
 
 double Grid::PredictCrossing(const Mover& m, std::uint32_t cell, double min_dt, int& axis,
@@ -139,7 +138,7 @@ double Grid::PredictCrossing(const Mover& m, std::uint32_t cell, double min_dt, 
 }
 
 Grid::Place Grid::Move(std::uint32_t e, int axis, int direction, Vec3& shift) {
-  std::array<int, 3> c = Coordinates(cell_of_[e]);
+  std::array<int, 3> c = Coordinates(Links(e).cell);
   c[axis] += direction;
   shift = Vec3::Zero();
   if (c[axis] < 0) {
@@ -157,12 +156,20 @@ Grid::Place Grid::Move(std::uint32_t e, int axis, int direction, Vec3& shift) {
 }
 
 void Grid::Permute(const std::vector<std::uint32_t>& old_of_new) {
-  const BigVector<std::uint32_t> old_cell_of = cell_of_;
+  if (links_ == reinterpret_cast<char*>(own_links_.data())) {
+    const BigVector<GridLinks> old = own_links_;
+    for (std::size_t e = 0; e < old_of_new.size(); ++e) own_links_[e] = old[old_of_new[e]];
+  }
+  Relink();
+}
+
+void Grid::Relink() {
   std::fill(head_.begin(), head_.end(), kNoIndex);
-  std::fill(cell_of_.begin(), cell_of_.end(), kNoIndex);
   // Linking pushes to the front: link in decreasing order so lists run in increasing order.
-  for (std::size_t e = old_of_new.size(); e-- > 0;) {
-    Link(static_cast<std::uint32_t>(e), old_cell_of[old_of_new[e]]);
+  for (std::size_t e = elements_; e-- > 0;) {
+    const auto element = static_cast<std::uint32_t>(e);
+    const std::uint32_t cell = Links(element).cell;
+    if (cell != kNoIndex) Link(element, cell);
   }
 }
 
@@ -183,8 +190,8 @@ std::uint64_t Grid::MortonKey(std::uint32_t cell) const {
 }
 
 std::size_t Grid::MemoryBytes() const {
-  return (head_.capacity() + next_.capacity() + prev_.capacity() + cell_of_.capacity()) *
-             sizeof(std::uint32_t) +
+  // The owner counts its records, links included.
+  return head_.capacity() * sizeof(std::uint32_t) + own_links_.capacity() * sizeof(GridLinks) +
          (faces_[0].capacity() + faces_[1].capacity() + faces_[2].capacity()) * sizeof(double);
 }
 

@@ -14,6 +14,13 @@
 
 namespace sparsedyn {
 
+/// An element's place in the Grid's cell lists: its cell and the next element of that cell's
+/// list (kNoIndex at the end; kNoIndex as the cell: not in the grid).
+struct GridLinks {
+  std::uint32_t cell = kNoIndex;
+  std::uint32_t next = kNoIndex;
+};
+
 /// A uniform grid over a box with cell-crossing events (the standard event-driven cell list,
 /// e.g. Rapaport's book and DynamO): an element is compared only with the elements of the 27
 /// cells around its own, which is exact as long as the cell side is at least the largest
@@ -36,11 +43,29 @@ class Grid {
 
   Grid() = default;
   Grid(const Config& config, std::uint32_t element_capacity);
+  // Not copied: the links may point into the grid's own array (a move keeps its buffer).
+  Grid(const Grid&) = delete;
+  Grid& operator=(const Grid&) = delete;
+  Grid(Grid&&) = default;
+  Grid& operator=(Grid&&) = default;
+  ~Grid() = default;
+
+  /// Keeps the elements' links in the owner's records instead of the grid's own array: element
+  /// e's links at byte e << stride_shift from `first`, for `count` elements (and the owner
+  /// calls this again whenever the records move). A scan then finds a neighbour's successor
+  /// in the same cache line as the neighbour's data, which it reads anyway. The links there
+  /// are taken as they are: Relink() rebuilds the lists from their cells.
+  void UseLinks(GridLinks* first, unsigned stride_shift, std::size_t count) {
+    if (first != own_links_.data()) BigVector<GridLinks>().swap(own_links_);
+    links_ = reinterpret_cast<char*>(first);
+    links_shift_ = stride_shift;
+    elements_ = count;
+  }
 
   /// Places element `e` (centre `p`, inside the box up to round-off) in its cell.
   void Insert(std::uint32_t e, const Vec3& p);
   void Remove(std::uint32_t e);
-  std::uint32_t CellOf(std::uint32_t e) const { return cell_of_[e]; }
+  std::uint32_t CellOf(std::uint32_t e) const { return Links(e).cell; }
 
   /// dt until the centre of `m` leaves the cell `cell` (faces on the outer walls of a walled box
   /// never count). Sets `axis` and `direction` (+1/-1) of the face it leaves through.
@@ -53,7 +78,10 @@ class Grid {
     std::uint32_t cell;
     std::array<int, 3> at;
   };
-  Place PlaceOf(std::uint32_t e) const { return {cell_of_[e], Coordinates(cell_of_[e])}; }
+  Place PlaceOf(std::uint32_t e) const {
+    const std::uint32_t cell = Links(e).cell;
+    return {cell, Coordinates(cell)};
+  }
 
   /// PredictCrossing for a centre on a straight line (p0 + v dt, no acceleration): the same
   /// answer with a division per axis instead of the general quadratic. Without branches on the
@@ -169,12 +197,6 @@ class Grid {
   // guesses: any cell index is accepted (wrapped into the grid, a wrong cell near the outer
   // layer costs a useless fetch).
 
-  /// Fetches e's own entries, which a Move of e reads.
-  void FetchElement(std::uint32_t e) const {
-    __builtin_prefetch(&cell_of_[e]);
-    __builtin_prefetch(&next_[e]);
-    __builtin_prefetch(&prev_[e]);
-  }
   /// Fetches the head rows of the 27 cells around `cell`.
   void FetchAround(std::uint32_t cell) const {
     const auto size = static_cast<std::uint32_t>(head_.size());
@@ -183,14 +205,13 @@ class Grid {
     }
   }
   /// Once those heads are at hand: calls fn(j) for the first element j of each non-empty cell
-  /// of the 27 around `cell` (for the caller to fetch its data) and fetches j's list successor.
+  /// of the 27 around `cell` (for the caller to fetch its data, and with them its links).
   template <typename Fn>
   void FetchListsAround(std::uint32_t cell, Fn&& fn) const {
     const auto size = static_cast<std::uint32_t>(head_.size());
     for (const std::int32_t offset : around_cells_) {
       const std::uint32_t j = head_[(cell + static_cast<std::uint32_t>(offset)) % size];
       if (j == kNoIndex) continue;
-      __builtin_prefetch(&next_[j]);
       fn(j);
     }
   }
@@ -201,8 +222,11 @@ class Grid {
   }
 
   /// The elements renumbered: element `old_of_new[e]` becomes element e, keeping its cell.
-  /// Each cell's list is rebuilt in increasing element order.
+  /// Each cell's list is rebuilt in increasing element order. With the owner's links (UseLinks)
+  /// the owner has moved the records already: only the lists are rebuilt (Relink).
   void Permute(const std::vector<std::uint32_t>& old_of_new);
+  /// Rebuilds every cell's list from the elements' cells, in increasing element order.
+  void Relink();
 
   /// A key that orders cells along a Morton (Z-order) curve: cells near in space get keys near
   /// each other, so elements sorted by it are near in memory when they are near in space.
@@ -273,7 +297,7 @@ class Grid {
     // Room for every element and the heads: no check in the loop (a call there would make it
     // keep fn's values in memory).
     constexpr int kCount = kRuns * kRun;
-    if (pending.size() < next_.size() + kCount + 1) pending.resize(next_.size() + kCount + 1);
+    if (pending.size() < elements_ + kCount + 1) pending.resize(elements_ + kCount + 1);
     std::uint32_t* buffer = pending.data();
     std::uint32_t n = 0;
     for (int r = 0; r < kRuns; ++r) {
@@ -286,7 +310,7 @@ class Grid {
     }
     for (std::uint32_t k = 0; k < n; ++k) {
       const std::uint32_t j = buffer[k];
-      const std::uint32_t next = next_[j];
+      const std::uint32_t next = Links(j).next;
       buffer[n] = next;
       n += next != kNoIndex ? 1u : 0u;
       fn(j);
@@ -324,7 +348,7 @@ class Grid {
   }
   template <typename Fn>
   void VisitList(std::uint32_t e, std::uint32_t j, const Vec3& shift, Fn& fn) const {
-    for (; j != kNoIndex; j = next_[j]) {
+    for (; j != kNoIndex; j = Links(j).next) {
       if (j != e) fn(j, shift);
     }
   }
@@ -365,9 +389,20 @@ class Grid {
   std::array<std::int32_t, 27> around_cells_{};
   bool periodic_ = false;
   BigVector<std::uint32_t> head_;  // first element of each cell
-  BigVector<std::uint32_t> next_;  // intrusive doubly linked lists of each cell
-  BigVector<std::uint32_t> prev_;
-  BigVector<std::uint32_t> cell_of_;
+  // Each element's links (an intrusive singly linked list per cell: a cell holds about one
+  // element, so unlinking walks a step or two where a back link would be one more array, and
+  // one more cache miss per move beyond the caches): in own_links_ or in the owner's records
+  // (UseLinks).
+  const GridLinks& Links(std::uint32_t e) const {
+    return *reinterpret_cast<const GridLinks*>(links_ + (std::size_t{e} << links_shift_));
+  }
+  GridLinks& Links(std::uint32_t e) {
+    return *reinterpret_cast<GridLinks*>(links_ + (std::size_t{e} << links_shift_));
+  }
+  BigVector<GridLinks> own_links_;
+  char* links_ = nullptr;
+  unsigned links_shift_ = 3;  // log2(sizeof(GridLinks)) for own_links_
+  std::size_t elements_ = 0;
 };
 
 }  // namespace sparsedyn

@@ -199,7 +199,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   }
 
   // Accepted: from here on nothing can fail.
-  starts_.push_back(PathStart{def.position, def.velocity, now_});
+  starts_.push_back(ElementStart{PathStart{def.position, def.velocity, now_}, GridLinks{}});
   const Vec3 acceleration = settings_.gravity + def.thrust;
   if (!own_accelerations_ && acceleration != uniform_acceleration_) {
     own_accelerations_ = true;  // the first body with a thrust of its own
@@ -236,6 +236,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
       Start();
     } else {
       const auto i = static_cast<std::uint32_t>(index);
+      ShareGridLinks();  // starts_ may have moved
       if (grid_) grid_->Insert(i, def.position);
       if (all_pairs_) all_pairs_->Insert(i, def.position);
       PredictFull(i);
@@ -260,7 +261,7 @@ void World::Impl::Start() {
   for (std::uint32_t i = 0; i < n; ++i) {
     if (polyhedra_) q0_[i] = RigidPathOf(i).OrientationAt(now_).normalized();
     const Path path = PathOf(i).RebasedAt(now_);
-    starts_[i] = PathStart{WrapIntoBox(path.p0), path.v0, path.t0};
+    SetStart(i, PathStart{WrapIntoBox(path.p0), path.v0, path.t0});
   }
 
   // The fast scan skips the engaged-pair check: only for spheres without envelopes.
@@ -286,6 +287,7 @@ void World::Impl::Start() {
     config.target_cell_size =
         std::cbrt(volume / (std::max(settings_.grid_cells_per_body, 1e-6) * n));
     if (Grid::Feasible(config)) grid_.emplace(config, n);
+    ShareGridLinks();
   }
   if (!grid_) {
     AllPairs::Config config;
@@ -403,7 +405,7 @@ Status World::Impl::Validate() const {
 std::size_t World::Impl::MemoryBytes() const {
   // A std::map node holds its value and about four pointers.
   std::size_t bytes =
-      starts_.capacity() * sizeof(PathStart) + acceleration_.capacity() * sizeof(Vec3) +
+      starts_.capacity() * sizeof(ElementStart) + acceleration_.capacity() * sizeof(Vec3) +
       materials_.capacity() * sizeof(Material) +
       material_index_.size() * (sizeof(std::array<double, 4>) + 40) +
       material_.capacity() * sizeof(std::uint32_t) + envelope_.capacity() * sizeof(Envelope) +

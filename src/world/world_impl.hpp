@@ -56,7 +56,21 @@ class World::Impl {
   double max_penetration_ = 0.0;
 
   // Per-element state (structure of arrays, indexed by body index).
-  BigVector<PathStart> starts_;              // the path of body i is PathOf(i)
+  // A body's path start and its place in the grid's cell lists in one aligned cache line: a
+  // scan reads a neighbour's start and its list successor together, and an event's element
+  // its start and cell (docs/benchmarks.md, thirteenth measurement).
+  struct alignas(64) ElementStart : PathStart {
+    GridLinks links;
+  };
+  static_assert(sizeof(ElementStart) == 64, "one cache line per element");
+  BigVector<ElementStart> starts_;           // the path of body i is PathOf(i)
+  void SetStart(std::uint32_t i, const PathStart& start) {
+    static_cast<PathStart&>(starts_[i]) = start;
+  }
+  // Hands the grid the links in starts_ (again after starts_ moved).
+  void ShareGridLinks() {
+    if (grid_ && !starts_.empty()) grid_->UseLinks(&starts_.data()->links, 6, starts_.size());
+  }
   std::vector<Vec3> acceleration_;          // per body once own_accelerations_
   Vec3 uniform_acceleration_ = Vec3::Zero();  // gravity: every body's, until one has a thrust
   bool own_accelerations_ = false;
@@ -214,7 +228,7 @@ class World::Impl {
   // The look-ahead: fetches what the next events will read while this one is handled.
   void FetchAhead() const;
   void FetchElement(std::uint32_t e) const;
-  void FetchStart(std::uint32_t e) const;  // e's path start (part of FetchElement)
+  void FetchStart(std::uint32_t e) const;  // e's path start and grid links (one line)
   std::uint32_t CellAhead(std::uint32_t e) const;
   void HandleSphereMeet(std::uint32_t i);
   void HandleWallMeet(std::uint32_t i);

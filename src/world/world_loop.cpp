@@ -56,17 +56,13 @@ Status World::Impl::AdvanceTo(double t) {
 }
 
 void World::Impl::FetchStart(std::uint32_t e) const {
-  // Both ends: a 56-byte record spans two cache lines 7 times in 8.
-  const auto* start = reinterpret_cast<const char*>(&starts_[e]);
-  __builtin_prefetch(start);
-  __builtin_prefetch(start + sizeof(PathStart) - 1);
+  __builtin_prefetch(&starts_[e]);  // one line: the path start and the grid links
 }
 
 void World::Impl::FetchElement(std::uint32_t e) const {
   FetchStart(e);
   __builtin_prefetch(&prediction_[e]);
   __builtin_prefetch(&version_[e]);
-  grid_->FetchElement(e);
   queue_.Prefetch(e);
 }
 
@@ -192,7 +188,7 @@ void World::Impl::NotePenetration(double gap) {
 
 void World::Impl::SetVelocity(std::uint32_t i, const Vec3& v) {
   const Path path = PathOf(i);
-  starts_[i] = PathStart{path.PositionAt(now_), v, now_};
+  SetStart(i, PathStart{path.PositionAt(now_), v, now_});
   ++version_[i];
   if (on_segment_) {
     on_segment_(MotionSegment{now_, PublicId(i), starts_[i].p0, v, path.a, version_[i]});

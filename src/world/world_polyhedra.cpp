@@ -226,7 +226,7 @@ void World::Impl::SetMotion(std::uint32_t i, const Vec3& v, const Vec3& omega) {
   q0_[i] = path.OrientationAt(now_).normalized();
   omega_[i] = omega;
   spin_radius_[i] = SpinRadiusOf(i);
-  starts_[i] = PathStart{path.centre.PositionAt(now_), v, now_};
+  SetStart(i, PathStart{path.centre.PositionAt(now_), v, now_});
   ++version_[i];
   if (on_segment_) {
     MotionSegment segment{now_, PublicId(i), starts_[i].p0, v, path.centre.a, version_[i]};

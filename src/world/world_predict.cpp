@@ -96,7 +96,7 @@ void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather
   const PathStart pi = starts_[i];
   const double ri = kOneMaterial ? materials_[0].radius : Radius(i);
   const Vec3 kNoShift = Vec3::Zero();  // interior cells: no image shift
-  const PathStart* starts = starts_.data();
+  const ElementStart* starts = starts_.data();
   const std::uint32_t* material = material_.data();
   const Material* materials = materials_.data();
   std::uint32_t visited = 0, self = 0, hits = 0;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Grid: neighbour visits against brute force (with their periodic image shifts, around every
-// cell and after every crossing), and renumbering (Permute) keeps every element in its cell
-// with the same neighbours.
+// cell and after every crossing), renumbering (Permute) keeps every element in its cell with the
+// same neighbours, and links kept in the owner's records act as the grid's own.
 #include "broadphase/grid.hpp"
 
 #include <gtest/gtest.h>
@@ -80,6 +80,79 @@ TEST(Grid, NeighboursMatchBruteForceAndSurvivePermutation) {
     for (std::uint32_t e = 0; e < n; ++e) EXPECT_EQ(grid.CellOf(e), old_cells[old_of_new[e]]);
     EXPECT_EQ(NeighbourPairs(grid, n, old_of_new), expected) << "periodic " << periodic;
   }
+}
+
+// The links kept in the owner's records (UseLinks, as the World keeps them beside each path
+// start) against the grid's own: the same cells and neighbours through inserts, removals from
+// every place of a list (head, middle, end: the lists are singly linked), moves across every
+// side and a renumbering in which the owner moves its records first; the rest of each record
+// is never written.
+TEST(Grid, LinksInTheOwnersRecordsActAsItsOwn) {
+  struct alignas(64) Record {
+    std::array<std::uint8_t, 56> payload;
+    GridLinks links;
+  };
+  Grid::Config config;
+  config.hi = Vec3(6, 5, 4);
+  config.periodic = true;
+  const std::uint32_t n = 300;  // ~2.5 per cell: lists of every length
+  Grid own(config, n), shared(config, n);
+  std::vector<Record> records(n);
+  for (std::uint32_t e = 0; e < n; ++e) records[e].payload.fill(static_cast<std::uint8_t>(e));
+  shared.UseLinks(&records[0].links, 6, n);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (std::uint32_t e = 0; e < n; ++e) {
+    const Vec3 p(6 * u(rng), 5 * u(rng), 4 * u(rng));
+    own.Insert(e, p);
+    shared.Insert(e, p);
+  }
+  std::vector<std::uint32_t> identity(n);
+  for (std::uint32_t e = 0; e < n; ++e) identity[e] = e;
+  const auto expect_same = [&](const std::vector<std::uint32_t>& original_of) {
+    for (std::uint32_t e = 0; e < n; ++e) {
+      ASSERT_EQ(shared.CellOf(e), own.CellOf(e)) << e;
+      ASSERT_EQ(records[e].links.cell, own.CellOf(e)) << e;  // the links live in the records
+    }
+    EXPECT_EQ(NeighbourPairs(shared, n, original_of), NeighbourPairs(own, n, identity));
+  };
+  expect_same(identity);
+  std::uniform_int_distribution<std::uint32_t> pick(0, n - 1);
+  for (int step = 0; step < 3000; ++step) {
+    const std::uint32_t e = pick(rng);
+    if (step % 10 == 0) {  // out and back in elsewhere
+      const Vec3 p(6 * u(rng), 5 * u(rng), 4 * u(rng));
+      own.Remove(e);
+      shared.Remove(e);
+      own.Insert(e, p);
+      shared.Insert(e, p);
+      continue;
+    }
+    const int axis = step % 3;
+    const int direction = (step / 3) % 2 == 0 ? 1 : -1;
+    Vec3 own_shift, shared_shift;
+    const Grid::Place a = own.Move(e, axis, direction, own_shift);
+    const Grid::Place b = shared.Move(e, axis, direction, shared_shift);
+    ASSERT_EQ(a.cell, b.cell);
+    ASSERT_EQ(own_shift, shared_shift);
+  }
+  expect_same(identity);
+
+  // Renumbered: the owner moves its records (links included), then the grid relinks.
+  std::vector<std::uint32_t> old_of_new = identity;
+  std::shuffle(old_of_new.begin(), old_of_new.end(), rng);
+  std::vector<Record> moved(n);
+  for (std::uint32_t e = 0; e < n; ++e) moved[e] = records[old_of_new[e]];
+  records.swap(moved);
+  shared.UseLinks(&records[0].links, 6, n);
+  shared.Permute(old_of_new);
+  for (std::uint32_t e = 0; e < n; ++e) {
+    ASSERT_EQ(shared.CellOf(e), own.CellOf(old_of_new[e])) << e;
+    for (const std::uint8_t byte : records[e].payload) {
+      ASSERT_EQ(byte, static_cast<std::uint8_t>(old_of_new[e]));
+    }
+  }
+  EXPECT_EQ(NeighbourPairs(shared, n, old_of_new), NeighbourPairs(own, n, identity));
 }
 
 // Brute force for a visit around cell `c`: every j != e whose cell, shifted by whole periods,
