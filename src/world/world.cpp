@@ -224,7 +224,6 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
     envelope_.resize(index);
   }
   if (has_envelopes_) envelope_.push_back(def.envelope);
-  version_.push_back(0);
   public_of_.push_back(static_cast<std::uint32_t>(index));
   internal_of_.push_back(static_cast<std::uint32_t>(index));
   prediction_.emplace_back();
@@ -312,12 +311,9 @@ void World::Impl::Start() {
 
 BodyState World::Impl::StateAt(std::uint32_t i, double t) const {
   const Path& path = PathOf(i);
-  BodyState state{WrapIntoBox(path.PositionAt(t)),
-                  path.VelocityAt(t),
-                  path.a,
-                  Radius(i),
-                  1.0 / InvMass(i),
-                  version_[i]};
+  BodyState state{
+      WrapIntoBox(path.PositionAt(t)), path.VelocityAt(t), path.a, Radius(i), 1.0 / InvMass(i),
+      prediction_[i].version};
   if (polyhedra_) {
     state.orientation = RigidPathOf(i).OrientationAt(t).normalized();
     state.angular_velocity = omega_[i];
@@ -409,8 +405,7 @@ std::size_t World::Impl::MemoryBytes() const {
       materials_.capacity() * sizeof(Material) +
       material_index_.size() * (sizeof(std::array<double, 4>) + 40) +
       material_.capacity() * sizeof(std::uint32_t) + envelope_.capacity() * sizeof(Envelope) +
-      (version_.capacity() + public_of_.capacity() + internal_of_.capacity()) *
-          sizeof(std::uint32_t) +
+      (public_of_.capacity() + internal_of_.capacity()) * sizeof(std::uint32_t) +
       prediction_.capacity() * sizeof(Prediction) + queue_.MemoryBytes() +
       engagement_queue_.MemoryBytes() + gathered_.capacity() * sizeof(std::uint32_t);
   bytes += shape_.capacity() * sizeof(std::uint32_t) + q0_.capacity() * sizeof(Eigen::Quaterniond) +

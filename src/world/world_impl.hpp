@@ -126,7 +126,6 @@ class World::Impl {
   /// Elements' spheres that meet become engaged and the detailed phase watches them.
   bool EngagesOnMeet() const { return has_envelopes_ || polyhedra_; }
   std::vector<Envelope> envelope_;          // empty unless some body has an envelope
-  BigVector<std::uint32_t> version_;        // path changes so far
   struct Candidate {                        // the earliest meeting found by the last prediction
     double time = kInfinity;
     std::uint32_t target = kNoIndex;
@@ -134,11 +133,14 @@ class World::Impl {
   };
   // Each element's one outstanding prediction (§4): the kind of its queued event (the queue
   // holds the time) and the meeting its last prediction found, which a crossing keeps and a
-  // kSphereMeet event is with. One 24-byte record, as every event reads both.
+  // kSphereMeet event is with; and the element's version (§4.2), which its events bump and its
+  // partners' predictions copy. One 24-byte record, as every event reads them all.
   struct Prediction : Candidate {
     EventKind kind = EventKind::kNone;
     std::uint8_t aux = 0;  // kWallMeet: the wall; kCellCrossing: axis * 2 + (1 if upwards)
+    std::uint32_t version = 0;  // the element's own path changes so far (in the padding)
   };
+  static_assert(sizeof(Prediction) == 24);
   BigVector<Prediction> prediction_;
   // Internal indices follow space (Reorder); the public BodyId index is the order of AddBody.
   std::vector<std::uint32_t> public_of_;    // internal index -> public index

@@ -62,7 +62,7 @@ void World::Impl::FetchStart(std::uint32_t e) const {
 void World::Impl::FetchElement(std::uint32_t e) const {
   FetchStart(e);
   __builtin_prefetch(&prediction_[e]);
-  __builtin_prefetch(&version_[e]);
+  __builtin_prefetch(&prediction_[e].version);
   queue_.Prefetch(e);
 }
 
@@ -94,7 +94,7 @@ void World::Impl::FetchAhead() const {
     if (event.kind == EventKind::kCellCrossing) {
       // A crossing checks whether its kept meeting's target changed path.
       const std::uint32_t kept = event.target;
-      if (kept != kNoIndex) __builtin_prefetch(&version_[kept]);
+      if (kept != kNoIndex) __builtin_prefetch(&prediction_[kept].version);
     }
   }
   if (count >= 4) FetchElement(next[3]);
@@ -153,7 +153,7 @@ bool World::Impl::TouchingAndApproaching(std::uint32_t i, std::uint32_t j, Vec3&
 void World::Impl::HandleSphereMeet(std::uint32_t i) {
   const Prediction event = prediction_[i];
   const std::uint32_t j = event.target;
-  if (version_[j] != event.target_version) {
+  if (prediction_[j].version != event.target_version) {
     // Target-absent (§4.2): the target changed path since; the actor looks again.
     ++stats_.stale_target_absent;
     PredictFull(i);
@@ -189,9 +189,9 @@ void World::Impl::NotePenetration(double gap) {
 void World::Impl::SetVelocity(std::uint32_t i, const Vec3& v) {
   const Path path = PathOf(i);
   SetStart(i, PathStart{path.PositionAt(now_), v, now_});
-  ++version_[i];
+  ++prediction_[i].version;
   if (on_segment_) {
-    on_segment_(MotionSegment{now_, PublicId(i), starts_[i].p0, v, path.a, version_[i]});
+    on_segment_(MotionSegment{now_, PublicId(i), starts_[i].p0, v, path.a, prediction_[i].version});
   }
 }
 

@@ -227,9 +227,9 @@ void World::Impl::SetMotion(std::uint32_t i, const Vec3& v, const Vec3& omega) {
   omega_[i] = omega;
   spin_radius_[i] = SpinRadiusOf(i);
   SetStart(i, PathStart{path.centre.PositionAt(now_), v, now_});
-  ++version_[i];
+  ++prediction_[i].version;
   if (on_segment_) {
-    MotionSegment segment{now_, PublicId(i), starts_[i].p0, v, path.centre.a, version_[i]};
+    MotionSegment segment{now_, PublicId(i), starts_[i].p0, v, path.centre.a, prediction_[i].version};
     segment.orientation = q0_[i];
     segment.angular_velocity = omega;
     on_segment_(segment);

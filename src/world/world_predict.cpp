@@ -32,7 +32,8 @@ void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& 
 
 void World::Impl::Offer(Candidate& best, double t, std::uint32_t j) const {
   // Ties go to the lower target index so that both broad phases choose the same event.
-  if (t < best.time || (t == best.time && j < best.target)) best = Candidate{t, j, version_[j]};
+  if (t < best.time || (t == best.time && j < best.target))
+    best = Candidate{t, j, prediction_[j].version};
 }
 
 namespace {
@@ -273,7 +274,8 @@ void World::Impl::PredictAfterCrossing(std::uint32_t i, const Grid::Place& place
   // as long as its target has not changed path; then only the 9 new cells need a look
   // (docs/sparse-phase.md#cell-crossings). Otherwise predict in full.
   const Candidate& kept = prediction_[i];
-  const bool kept_valid = kept.time == kInfinity || version_[kept.target] == kept.target_version;
+  const bool kept_valid =
+      kept.time == kInfinity || prediction_[kept.target].version == kept.target_version;
   if (!kept_valid) {
     PredictFull(i);
     return;

@@ -58,7 +58,6 @@ void World::Impl::Reorder() {
     PermuteVector(omega_, old_of_new);
     PermuteVector(spin_radius_, old_of_new);
   }
-  PermuteVector(version_, old_of_new);
   PermuteVector(prediction_, old_of_new);
   PermuteVector(public_of_, old_of_new);
   for (std::uint32_t e = 0; e < n; ++e) {
