@@ -66,7 +66,7 @@ Grid::Grid(const Config& config, std::uint32_t element_capacity)
   }
   head_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2], kNoIndex);
   own_links_.assign(element_capacity, GridLinks{});
-  UseLinks(own_links_.data(), 3, own_links_.size());
+  UseOwnLinks();
 }
 
 std::uint32_t Grid::CellAt(const Vec3& p) const {
@@ -80,11 +80,10 @@ std::uint32_t Grid::CellAt(const Vec3& p) const {
 
 void Grid::Insert(std::uint32_t e, const Vec3& p) {
   if (e >= elements_) {
-    SPARSEDYN_ASSERT(links_ == reinterpret_cast<char*>(own_links_.data()),
-                     "Grid::Insert beyond the owner's links");
+    SPARSEDYN_ASSERT(OwnsLinks(), "Grid::Insert beyond the owner's links");
     const std::size_t size = std::max<std::size_t>(e + 1, elements_ * 2);
     own_links_.resize(size, GridLinks{});
-    UseLinks(own_links_.data(), 3, own_links_.size());
+    UseOwnLinks();
   }
   Link(e, CellAt(p));
 }
@@ -156,7 +155,7 @@ Grid::Place Grid::Move(std::uint32_t e, int axis, int direction, Vec3& shift) {
 }
 
 void Grid::Permute(const std::vector<std::uint32_t>& old_of_new) {
-  if (links_ == reinterpret_cast<char*>(own_links_.data())) {
+  if (OwnsLinks()) {
     const BigVector<GridLinks> old = own_links_;
     for (std::size_t e = 0; e < old_of_new.size(); ++e) own_links_[e] = old[old_of_new[e]];
   }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +21,13 @@ struct GridLinks {
   std::uint32_t cell = kNoIndex;
   std::uint32_t next = kNoIndex;
 };
+
+/// log2 of a record's size, for Grid::UseLinks' stride (records are powers of two in size).
+template <typename Record>
+constexpr unsigned StrideShiftOf() {
+  static_assert(std::has_single_bit(sizeof(Record)), "a record's size must be a power of two");
+  return static_cast<unsigned>(std::countr_zero(sizeof(Record)));
+}
 
 /// A uniform grid over a box with cell-crossing events (the standard event-driven cell list,
 /// e.g. Rapaport's book and DynamO): an element is compared only with the elements of the 27
@@ -399,9 +407,11 @@ class Grid {
   GridLinks& Links(std::uint32_t e) {
     return *reinterpret_cast<GridLinks*>(links_ + (std::size_t{e} << links_shift_));
   }
+  bool OwnsLinks() const { return links_ == reinterpret_cast<const char*>(own_links_.data()); }
+  void UseOwnLinks() { UseLinks(own_links_.data(), StrideShiftOf<GridLinks>(), own_links_.size()); }
   BigVector<GridLinks> own_links_;
   char* links_ = nullptr;
-  unsigned links_shift_ = 3;  // log2(sizeof(GridLinks)) for own_links_
+  unsigned links_shift_ = StrideShiftOf<GridLinks>();
   std::size_t elements_ = 0;
 };
 

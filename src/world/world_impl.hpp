@@ -69,7 +69,9 @@ class World::Impl {
   }
   // Hands the grid the links in starts_ (again after starts_ moved).
   void ShareGridLinks() {
-    if (grid_ && !starts_.empty()) grid_->UseLinks(&starts_.data()->links, 6, starts_.size());
+    if (grid_ && !starts_.empty()) {
+      grid_->UseLinks(&starts_.data()->links, StrideShiftOf<ElementStart>(), starts_.size());
+    }
   }
   std::vector<Vec3> acceleration_;          // per body once own_accelerations_
   Vec3 uniform_acceleration_ = Vec3::Zero();  // gravity: every body's, until one has a thrust

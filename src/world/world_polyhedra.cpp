@@ -229,7 +229,8 @@ void World::Impl::SetMotion(std::uint32_t i, const Vec3& v, const Vec3& omega) {
   SetStart(i, PathStart{path.centre.PositionAt(now_), v, now_});
   ++prediction_[i].version;
   if (on_segment_) {
-    MotionSegment segment{now_, PublicId(i), starts_[i].p0, v, path.centre.a, prediction_[i].version};
+    MotionSegment segment{
+        now_, PublicId(i), starts_[i].p0, v, path.centre.a, prediction_[i].version};
     segment.orientation = q0_[i];
     segment.angular_velocity = omega;
     on_segment_(segment);

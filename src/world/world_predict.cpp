@@ -32,8 +32,9 @@ void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& 
 
 void World::Impl::Offer(Candidate& best, double t, std::uint32_t j) const {
   // Ties go to the lower target index so that both broad phases choose the same event.
-  if (t < best.time || (t == best.time && j < best.target))
+  if (t < best.time || (t == best.time && j < best.target)) {
     best = Candidate{t, j, prediction_[j].version};
+  }
 }
 
 namespace {
