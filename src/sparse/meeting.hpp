@@ -21,10 +21,19 @@ double PredictMeeting(const Mover& a, const Mover& b, const Vec3& shift_b,
                       double horizon = kPredictionHorizon);
 
 /// Moves a double-precision meeting time `dt` > 0 of two spheres on straight lines back until
-/// it is certainly not late (the gap, evaluated in long double with an error bound, is open and
-/// closing there). Out of line: reached only by pairs that do meet.
+/// it is certainly not late (the gap is open and closing there): CertifyLinearInDoubles, or
+/// for the pairs it leaves, the gap evaluated in long double with an error bound at steps back.
+/// Out of line: reached only by pairs that do meet.
 double CertifyLinearMeeting(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb,
                             const Vec3& shift_b, double reach, double dt);
+
+/// CertifyLinearMeeting's first try, in doubles: one evaluation of the gap and its slope at dt
+/// with rigorous rounding bounds, then a step back along the tangent (the gap is convex). The
+/// certified time (dt itself when the gap is certainly open there), or -1 when the pair is not
+/// certainly closing at dt (a graze) or the step would be long; the long-double loop then
+/// decides.
+double CertifyLinearInDoubles(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb,
+                              const Vec3& shift_b, double reach, double dt);
 
 /// The uncertified earliest meeting of two spheres on straight lines, from their relative
 /// position dp and velocity dv, each as its (x, y) pair and z, and their summed radius, which

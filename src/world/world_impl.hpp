@@ -20,6 +20,7 @@
 #include "events/event.hpp"
 #include "events/heap_queue.hpp"
 #include "math/huge_pages.hpp"
+#include "math/two_sum.hpp"
 #include "motion/path.hpp"
 #include "motion/rigid_path.hpp"
 #include "narrow/time_of_contact.hpp"
@@ -280,8 +281,7 @@ inline double NextDown(double t) {
 inline double EventTime(double now, double dt) {
   if (dt == kInfinity) return kInfinity;
   const double t = now + dt;
-  const double dt_part = t - now;
-  const double error = (now - (t - dt_part)) + (dt - dt_part);
+  const double error = TwoSumError(now, dt, t);
   // Rounded up half the time: a select, not a branch the predictor would miss half the time.
   // A negative error means the exact sum is not zero, so t = 0 (NextDown's special case) can
   // only come with error >= 0 and the bit step below is NextDown's for t != 0.
