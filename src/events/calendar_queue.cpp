@@ -26,7 +26,7 @@ constexpr std::uint64_t kMinPopSample = 32;
 
 // Width adaptation thresholds, per pop: more empty buckets scanned (plus entries re-bucketed
 // at a year's end) than kMaxScanPerPop means the buckets are too narrow, more entries in the
-// current bucket's heap than kMaxNearPerPop means they are too wide.
+// current bucket than kMaxNearPerPop means they are too wide.
 // Whole numbers: Refill, on every refill, compares in integers.
 constexpr std::uint64_t kMaxScanPerPop = 4;
 constexpr std::uint64_t kMaxNearPerPop = 24;
@@ -42,7 +42,8 @@ CalendarQueue::CalendarQueue() : heads_(kMinBuckets, kNoIndex) { SetYear(); }
 std::uint32_t CalendarQueue::Classify(double time) const {
   // A monotone map of time to a bucket: t1 <= t2 gives q1 <= q2 (IEEE subtraction and
   // multiplication by a positive constant are monotone), so an earlier bucket never holds a
-  // later time. NaN q (t and the origin the same infinity) goes to the exact heap.
+  // later time. NaN q (t and the origin the same infinity) goes to the current bucket, which orders
+  // exactly.
   const double q = (time - origin_) * inverse_width_;
   if (!(q >= current_end_)) return kNear;
   if (q >= year_end_) return kOverflow;
@@ -120,13 +121,18 @@ void CalendarQueue::Set(std::uint32_t slot, double time, EventKind kind) {
 }
 
 int CalendarQueue::Upcoming(std::uint32_t* out, int count) const {
-  // The heap's entries after its root, in order: the k-th entry after the root is on one of
-  // the k levels below it, so the three levels (14 entries) hold the next three for certain.
+  // The current bucket's entries after its earliest, in order: the earliest 14 of the list;
+  // of a heap, the three levels below the root (14 entries), which hold the next three for
+  // certain (the k-th entry after the root is on one of the k levels below it).
   std::array<Node, 14> near{};
   std::size_t taken = 0;
-  for (std::size_t at = 1; at < near_.size() && taken < near.size(); ++at) {
-    // Insertion into the sorted prefix (std::sort here draws a false -Warray-bounds).
-    std::size_t k = taken++;
+  const std::size_t end = near_heap_ ? std::min<std::size_t>(near_.size(), 15) : near_.size();
+  for (std::size_t at = 0; at < end; ++at) {
+    if (at == top_) continue;
+    // Insertion into the sorted prefix, the latest dropped when it is full (std::sort here
+    // draws a false -Warray-bounds).
+    if (taken == near.size() && !Less(near_[at], near[taken - 1])) continue;
+    std::size_t k = taken < near.size() ? taken++ : taken - 1;
     for (; k > 0 && Less(near_[at], near[k - 1]); --k) near[k] = near[k - 1];
     near[k] = near_[at];
   }
@@ -152,12 +158,12 @@ void CalendarQueue::Erase(std::uint32_t slot) {
 
 void CalendarQueue::Pop() {
   SPARSEDYN_ASSERT(!near_.empty(), "Pop() of an empty queue");
-  if (pops_ == 0) first_pop_time_ = near_[0].time;
-  last_pop_time_ = near_[0].time;
+  if (pops_ == 0) first_pop_time_ = near_[top_].time;
+  last_pop_time_ = near_[top_].time;
   ++pops_;
   near_sizes_ += near_.size();
-  entries_[SlotOf(near_[0])].where = kAbsent;
-  NearErase(0);
+  entries_[SlotOf(near_[top_])].where = kAbsent;
+  NearErase(top_);
   --size_;
 
   // Once per window of a year's worth of pops: does the width still fit the event spacing?
@@ -215,7 +221,7 @@ void CalendarQueue::Refill() {
       }
     }
 
-    // Its list becomes the heap (Floyd's bottom-up heap construction).
+    // Its list becomes the current one (a heap if it is long).
     for (std::uint32_t slot = heads_[b]; slot != kNoIndex;) {
       Entry& entry = entries_[slot];
       const std::uint32_t next = entry.next;
@@ -225,7 +231,12 @@ void CalendarQueue::Refill() {
       slot = next;
     }
     heads_[b] = kNoIndex;
-    for (auto i = static_cast<std::uint32_t>(near_.size() / 2); i-- > 0;) NearSiftDown(i);
+    near_heap_ = false;
+    if (near_.size() > kListLimit) {
+      MakeHeap();
+    } else {
+      FindTop();
+    }
   }
 
   // Too much scanning for the pops it served (many empty buckets or year ends): the buckets
@@ -234,13 +245,13 @@ void CalendarQueue::Refill() {
 }
 
 void CalendarQueue::Rollover() {
-  // The year is used up (heap and buckets empty): the next year starts at the earliest
+  // The year is used up (current bucket and buckets empty): the next year starts at the earliest
   // overflow entry, so a long quiet stretch costs one pass, not one pass per empty year.
   // Every entry is in the overflow list now (a time before the end of the year has a bucket
-  // or the heap). When the entries fill at least half of the slot array, two passes over it
+  // or the current one). When the entries fill at least half of the slot array, two passes over it
   // in slot order replace the walk along the list: each step of the walk waits for a cache
   // miss (at N = 10^6 most of a rollover's time), the passes stream. The order the entries
-  // are linked in does not matter: a refilled bucket is made a heap.
+  // are linked in does not matter: the current bucket finds its earliest itself.
   scan_cost_ += size_;
   if (2 * size_ >= entries_.size()) {
     double earliest = kInfinity;
@@ -273,6 +284,7 @@ void CalendarQueue::Rebuild() {
   scratch_.clear();
   for (const Node& node : near_) scratch_.push_back(SlotOf(node));
   near_.clear();
+  near_heap_ = false;
   for (std::uint32_t& head : heads_) {
     for (std::uint32_t slot = head; slot != kNoIndex; slot = entries_[slot].next) {
       scratch_.push_back(slot);
@@ -285,7 +297,7 @@ void CalendarQueue::Rebuild() {
   overflow_head_ = kNoIndex;
 
   // New year: about one bucket per entry, the width from the event spacing, starting at the
-  // earliest entry (which therefore lands in the heap: the head is always there).
+  // earliest entry (which therefore lands in the current bucket: the head is always there).
   heads_.assign(std::max(kMinBuckets, std::bit_ceil(size_)), kNoIndex);
   SetYear();
   if (!scratch_.empty()) {
@@ -361,6 +373,8 @@ void CalendarQueue::Clear() {
   entries_.clear();
   prefetch_ = false;
   near_.clear();
+  near_heap_ = false;
+  top_ = 0;
   heads_.assign(kMinBuckets, kNoIndex);
   SetYear();
   overflow_head_ = kNoIndex;
@@ -379,7 +393,22 @@ std::size_t CalendarQueue::MemoryBytes() const {
          sample_.capacity() * sizeof(double);
 }
 
-// --- The current bucket's indexed binary heap --------------------------------------------
+// --- The current bucket: an unsorted list, or beyond kListLimit an indexed binary heap ------
+
+void CalendarQueue::FindTop() {
+  // The earliest entry by a scan of selects: no branch on the (random) comparisons.
+  std::uint32_t best = 0;
+  const auto size = static_cast<std::uint32_t>(near_.size());
+  for (std::uint32_t at = 1; at < size; ++at) best = Less(near_[at], near_[best]) ? at : best;
+  top_ = best;
+}
+
+void CalendarQueue::MakeHeap() {
+  // Floyd's bottom-up heap construction; the heap stays until the bucket is used up.
+  near_heap_ = true;
+  top_ = 0;
+  for (auto i = static_cast<std::uint32_t>(near_.size() / 2); i-- > 0;) NearSiftDown(i);
+}
 
 void CalendarQueue::NearPlace(std::uint32_t at, const Node& node) {
   near_[at] = node;
@@ -392,13 +421,30 @@ void CalendarQueue::NearPush(const Node& node) {
   Entry& entry = entries_[SlotOf(node)];
   entry.where = kNear;
   entry.next = at;
-  NearSiftUp(at);
+  if (near_heap_) {
+    NearSiftUp(at);
+  } else if (near_.size() > kListLimit) {
+    MakeHeap();
+  } else {
+    top_ = at == 0 || Less(node, near_[top_]) ? at : top_;
+  }
 }
 
 void CalendarQueue::NearErase(std::uint32_t at) {
   const Node last = near_.back();
   near_.pop_back();
-  if (at == near_.size()) return;
+  const auto size = static_cast<std::uint32_t>(near_.size());
+  if (!near_heap_) {
+    // The last entry fills the hole; the earliest is looked for again only if it left.
+    if (at != size) NearPlace(at, last);
+    if (top_ == at) {
+      FindTop();
+    } else if (top_ == size) {
+      top_ = at;  // the earliest was the last entry, now at `at`
+    }
+    return;
+  }
+  if (at == size) return;
   NearPlace(at, last);
   if (at > 0 && Less(last, near_[(at - 1) / 2])) {
     NearSiftUp(at);
@@ -410,6 +456,14 @@ void CalendarQueue::NearErase(std::uint32_t at) {
 void CalendarQueue::NearUpdate(std::uint32_t at, const Node& node) {
   const bool earlier = Less(node, near_[at]);
   near_[at] = node;
+  if (!near_heap_) {
+    if (Less(node, near_[top_])) {
+      top_ = at;
+    } else if (top_ == at && !earlier) {
+      FindTop();
+    }
+    return;
+  }
   if (earlier) {
     NearSiftUp(at);
   } else {

@@ -22,19 +22,23 @@ namespace sparsedyn {
 ///   an entry with t in [origin + b w, origin + (b + 1) w) lives in bucket b, an unsorted
 ///   intrusive list threaded through a per-slot array (no allocation per bucket), so inserting,
 ///   erasing or moving it is O(1);
-/// - the *current* bucket is a small indexed binary heap (`near`) that also takes every entry
-///   at or before the current bucket, including times earlier than the head;
+/// - the *current* bucket (`near`) also takes every entry at or before it, including times
+///   earlier than the head. It holds a few entries (about 2.5 by the width rule below), so it
+///   is an unsorted list whose earliest entry is found by a scan without branches (a heap's
+///   sifts branch on comparisons of random times, which the processor guesses wrong every
+///   other time); beyond kListLimit entries (equal times, a burst) it becomes an indexed binary
+///   heap until it is used up;
 /// - entries beyond the year wait unsorted in an overflow list; when the year is used up the
 ///   origin moves to the earliest of them and they are re-bucketed.
-/// Because the bucket of a time is a monotone function of the time, every entry in the heap
-/// precedes every entry in a later bucket, so the heap's top is the queue's head; ties of equal
-/// times always share a bucket and are ordered by (kind, slot) in the heap.
+/// Because the bucket of a time is a monotone function of the time, every entry of the current
+/// bucket precedes every entry in a later bucket, so its earliest is the queue's head; ties of
+/// equal times always share a bucket and are ordered by (kind, slot) there.
 ///
 /// Resizing rule (amortised O(1) per operation): the queue is rebuilt with a bucket count of
 /// the next power of two >= Size() when Size() exceeds twice the bucket count or drops below a
 /// quarter of it; and when, over a window of at least BucketCount() pops, the average pop
 /// either scanned more than 4 empty buckets (width too small) or found more than 24 entries in
-/// the current heap (width too large), i.e. the event spacing drifted. A rebuild sets the
+/// the current bucket (width too large), i.e. the event spacing drifted. A rebuild sets the
 /// width to 2.5 times the mean spacing of the earliest min(Size() - 1, 256) finite times, and
 /// the origin to the earliest time.
 ///
@@ -63,12 +67,13 @@ class CalendarQueue {
   /// The earliest entry by (time, kind, slot). The queue must not be empty.
   QueueTop Top() const {
     SPARSEDYN_ASSERT(!near_.empty(), "Top() of an empty queue");
-    return {near_[0].time, static_cast<EventKind>(near_[0].order >> 32),
-            static_cast<std::uint32_t>(near_[0].order)};
+    const Node& top = near_[top_];
+    return {top.time, static_cast<EventKind>(top.order >> 32),
+            static_cast<std::uint32_t>(top.order)};
   }
 
   /// Up to `count` slots likely to be the next heads after the current one, earliest first as
-  /// far as the queue knows it cheaply (the current bucket's heap in order, then the next
+  /// far as the queue knows it cheaply (the current bucket in order, then the next
   /// non-empty buckets' lists in list order); for fetching their data ahead. Not exact: each
   /// event's handling may move entries. Returns how many it wrote.
   int Upcoming(std::uint32_t* out, int count) const;
@@ -104,14 +109,15 @@ class CalendarQueue {
   std::uint64_t RebuildCount() const { return rebuilds_; }
 
  private:
-  // A heap entry: the key, with the slot in the low bits of `order`.
+  // An entry of the current bucket: the key, with the slot in the low bits of `order`.
   struct Node {
     double time;
     std::uint64_t order;  // kind << 32 | slot: the deterministic tie-break, as in HeapQueue
   };
 
   // A slot's entry. In a bucket or the overflow list it is a node of an intrusive doubly
-  // linked list (no allocation per bucket, O(1) unlink); in the heap, `next` is its index there.
+  // linked list (no allocation per bucket, O(1) unlink); in the current bucket, `next` is its
+  // index in near_.
   struct Entry {
     double time;
     std::uint32_t next;
@@ -152,7 +158,11 @@ class CalendarQueue {
   double HeadSpacing();
   void ResetCounters();
 
-  // The current bucket's indexed binary heap.
+  // The current bucket: an unsorted list with its earliest entry at top_, or, beyond
+  // kListLimit entries, an indexed binary heap (top_ = 0).
+  static constexpr std::size_t kListLimit = 32;
+  void FindTop();
+  void MakeHeap();
   void NearPlace(std::uint32_t at, const Node& node);
   void NearPush(const Node& node);
   void NearErase(std::uint32_t at);
@@ -161,7 +171,9 @@ class CalendarQueue {
   void NearSiftDown(std::uint32_t at);
 
   BigVector<Entry> entries_;                // per slot
-  std::vector<Node> near_;                  // heap: the current bucket and anything earlier
+  std::vector<Node> near_;                  // the current bucket and anything earlier
+  std::uint32_t top_ = 0;                   // the earliest of near_
+  bool near_heap_ = false;                  // near_ is a heap (else an unsorted list)
   BigVector<std::uint32_t> heads_;          // the year: first slot of each bucket's list
   std::uint32_t overflow_head_ = kNoIndex;  // entries at or beyond the end of the year
   std::vector<std::uint32_t> scratch_;      // slots, reused by Rollover and Rebuild
@@ -171,7 +183,7 @@ class CalendarQueue {
   double width_ = 1.0;          // time span of one bucket
   double inverse_width_ = 1.0;  // 1 / width_: Classify multiplies
   std::uint32_t current_ = 0;   // the bucket whose entries are in near_
-  double current_end_ = 1.0;    // current_ + 1: the first bucket after the heap's
+  double current_end_ = 1.0;    // current_ + 1: the first bucket after the current one
   double year_end_ = 0.0;       // BucketCount()
 
   // Cost observed since the last rebuild or check, for the width adaptation.

@@ -241,6 +241,40 @@ TYPED_TEST(QueueOracle, AgreesWithReferenceWhenAllTimesAreEqual) {
   }
 }
 
+// Bursts of entries a hair apart (one bucket of a calendar queue, whose current bucket is a
+// list up to 32 entries and a heap beyond) around the list's limit, with moves inside the burst,
+// erasures and pops, between stretches of ordinary spacing.
+TYPED_TEST(QueueOracle, AgreesWithReferenceThroughBurstsInOneBucket) {
+  KeySource keys(6);
+  Twin<TypeParam> twin;
+  for (const std::uint32_t burst : {5u, 31u, 32u, 33u, 40u, 100u, 3u, 64u}) {
+    for (int op = 0; op < 300; ++op) {  // ordinary spacing
+      const std::uint32_t slot = keys.Slot(500);
+      twin.Set(slot, HeadTime(twin.reference) + keys.Exponential(1.0), keys.Kind());
+      if (keys.Uniform() < 0.5) twin.Pop();
+      ASSERT_TRUE(twin.Agrees(slot)) << "burst " << burst << ", operation " << op;
+    }
+    const double at = HeadTime(twin.reference) + 0.5;
+    for (std::uint32_t k = 0; k < burst; ++k) {
+      const std::uint32_t slot = keys.Slot(500);
+      twin.Set(slot, at + 1e-12 * static_cast<double>(keys.Slot(8)), keys.Kind());
+      ASSERT_TRUE(twin.Agrees(slot)) << "burst " << burst << ", entry " << k;
+    }
+    for (int op = 0; op < static_cast<int>(3 * burst); ++op) {  // moves, erasures, pops
+      const std::uint32_t slot = keys.Slot(500);
+      const double u = keys.Uniform();
+      if (u < 0.4) {
+        twin.Set(slot, at + 1e-12 * static_cast<double>(keys.Slot(8)), keys.Kind());
+      } else if (u < 0.5) {
+        twin.Erase(slot);
+      } else if (!twin.reference.Empty()) {
+        twin.Pop();
+      }
+      ASSERT_TRUE(twin.Agrees(slot)) << "burst " << burst << ", operation " << op;
+    }
+  }
+}
+
 TYPED_TEST(QueueOracle, EmptyQueueHasNoEntries) {
   TypeParam queue;
   EXPECT_TRUE(queue.Empty());
