@@ -62,9 +62,10 @@ struct WorldSettings {
   /// Collisions approaching slower than this (m/s) are elastic: the collapse guard.
   double elastic_below_speed = 1e-6;
   /// Grid cells per body (the cells are never smaller than the largest interaction distance).
-  /// More cells mean fewer pair tests per prediction but more cell crossings; 4 was fastest for
-  /// the gas at packings 0.05-0.30 (docs/benchmarks.md).
-  double grid_cells_per_body = 4.0;
+  /// More cells mean fewer pair tests per prediction but more cell crossings; 6 is as fast as 4
+  /// for the gas at N = 10^4 and a little faster at 10^5-10^6 and in the thesis scene of
+  /// polyhedra, for 8 bytes more per body (docs/benchmarks.md, fourteenth measurement).
+  double grid_cells_per_body = 6.0;
   /// Abort AdvanceTo with an error when this many events pass without the clock advancing by
   /// more than a relative 1e-12 (inelastic collapse or a stuck configuration): no hang.
   std::uint64_t stall_event_limit = 1u << 22;
