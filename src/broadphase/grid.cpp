@@ -47,6 +47,8 @@ Grid::Grid(const Config& config, std::uint32_t element_capacity)
     }
   }
   stride_ = {1u, static_cast<std::uint32_t>(n_[0]), static_cast<std::uint32_t>(n_[0] * n_[1])};
+  per_row_ = FastDivisor(static_cast<std::uint32_t>(n_[0]));
+  per_layer_ = FastDivisor(static_cast<std::uint32_t>(n_[1]));
   const std::int32_t sy = n_[0], sz = n_[0] * n_[1];
   for (int dz = -1, r = 0; dz <= 1; ++dz) {
     for (int dy = -1; dy <= 1; ++dy, ++r) around_rows_[r] = dz * sz + dy * sy - 1;
