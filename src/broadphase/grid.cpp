@@ -67,6 +67,7 @@ Grid::Grid(const Config& config, std::uint32_t element_capacity)
     }
   }
   head_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2], kNoIndex);
+  cells_ = FastDivisor(static_cast<std::uint32_t>(head_.size()));
   own_links_.assign(element_capacity, GridLinks{});
   UseOwnLinks();
 }

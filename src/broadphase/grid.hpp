@@ -208,26 +208,23 @@ class Grid {
 
   /// Fetches the head rows of the 27 cells around `cell`.
   void FetchAround(std::uint32_t cell) const {
-    const auto size = static_cast<std::uint32_t>(head_.size());
     for (const std::int32_t offset : around_rows_) {
-      __builtin_prefetch(&head_[(cell + static_cast<std::uint32_t>(offset)) % size]);
+      __builtin_prefetch(&head_[cells_.Remainder(cell + static_cast<std::uint32_t>(offset))]);
     }
   }
   /// Once those heads are at hand: calls fn(j) for the first element j of each non-empty cell
   /// of the 27 around `cell` (for the caller to fetch its data, and with them its links).
   template <typename Fn>
   void FetchListsAround(std::uint32_t cell, Fn&& fn) const {
-    const auto size = static_cast<std::uint32_t>(head_.size());
     for (const std::int32_t offset : around_cells_) {
-      const std::uint32_t j = head_[(cell + static_cast<std::uint32_t>(offset)) % size];
+      const std::uint32_t j = head_[cells_.Remainder(cell + static_cast<std::uint32_t>(offset))];
       if (j == kNoIndex) continue;
       fn(j);
     }
   }
   /// The cell across (axis, direction) from `cell`, wrapped into the grid as an index only.
   std::uint32_t CellAcross(std::uint32_t cell, int axis, int direction) const {
-    const auto size = static_cast<std::uint32_t>(head_.size());
-    return (cell + static_cast<std::uint32_t>(direction) * stride_[axis]) % size;
+    return cells_.Remainder(cell + static_cast<std::uint32_t>(direction) * stride_[axis]);
   }
 
   /// The elements renumbered: element `old_of_new[e]` becomes element e, keeping its cell.
@@ -250,8 +247,8 @@ class Grid {
     // Each crossing decodes its cell: two multiplications instead of two integer divisions.
     const std::uint32_t rest = per_row_.Divide(cell);
     const std::uint32_t z = per_layer_.Divide(rest);
-    return {static_cast<int>(cell - rest * stride_[1]),
-            static_cast<int>(rest - z * static_cast<std::uint32_t>(n_[1])), static_cast<int>(z)};
+    return {static_cast<int>(cell - rest * per_row_.Divisor()),
+            static_cast<int>(rest - z * per_layer_.Divisor()), static_cast<int>(z)};
   }
   std::uint32_t Index(const std::array<int, 3>& c) const {
     return static_cast<std::uint32_t>((c[2] * n_[1] + c[1]) * n_[0] + c[0]);
@@ -387,6 +384,7 @@ class Grid {
   std::array<int, 3> n_{1, 1, 1};
   std::array<std::uint32_t, 3> stride_{1, 1, 1};  // cell index step per axis (hot in scans)
   FastDivisor per_row_, per_layer_;               // by n_[0] and by n_[1], for Coordinates
+  FastDivisor cells_;  // by the cell count: the look-ahead wraps its guessed cells with it
   // The positions of the n_[k] + 1 faces along each axis, as PredictCrossing works them out
   // (the box faces exact: lo_ and lo_ + length_); the outer faces of a walled box, which are
   // no crossings, at -/+ infinity, which a centre never reaches.

@@ -23,6 +23,9 @@ class FastDivisor {
     return d_ == 1 ? n : q;
   }
 
+  /// n mod d.
+  std::uint32_t Remainder(std::uint32_t n) const { return n - Divide(n) * d_; }
+
  private:
   std::uint32_t d_ = 1;
   std::uint64_t reciprocal_ = 0;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// FastDivisor against the processor's integer division: every divisor up to 3000 (grids have
-// at most a few thousand cells per axis) and random ones up to 2^32 - 1, on the numerators
-// where a quotient changes (multiples of d and their neighbours), the extremes and random ones.
+// FastDivisor against the processor's integer division and remainder: every divisor up to 3000
+// (grids have at most a few thousand cells per axis) and random ones up to 2^32 - 1, on the
+// numerators where a quotient changes (multiples of d and their neighbours), the extremes and
+// random ones.
 #include "math/fast_divisor.hpp"
 
 #include <gtest/gtest.h>
@@ -19,6 +20,7 @@ void ExpectExact(std::uint32_t d, std::mt19937_64& rng) {
     if (n > UINT32_MAX) return;
     const auto value = static_cast<std::uint32_t>(n);
     ASSERT_EQ(divisor.Divide(value), value / d) << value << " / " << d;
+    ASSERT_EQ(divisor.Remainder(value), value % d) << value << " % " << d;
   };
   for (const std::uint64_t n : {0ull, 1ull, 0xffffffffull, 0xfffffffeull, 0x80000000ull}) check(n);
   // Around multiples of d, near 0 and near the top of the range.
