@@ -12,7 +12,12 @@ namespace {
 
 // Renumber after this many events per element: often enough to follow the diffusion of the
 // elements across cells, rarely enough that the O(N log N) pass is a small part of the cost.
+// While the data fit in the caches (fewer elements than the look-ahead's threshold) memory
+// order matters little, and a pass (~3M instructions at 10^4, the queue rebuilt, the caches
+// cold after it) costs more than it saves: the gas at 10^4 +1.4-2.4% every 256 events per
+// element (docs/benchmarks.md, fifteenth measurement), which still follows the diffusion.
 constexpr std::uint64_t kEventsPerElementBetweenReorders = 32;
+constexpr std::uint64_t kEventsPerElementBetweenReordersInCache = 256;
 
 template <typename Vector>
 void PermuteVector(Vector& values, const std::vector<std::uint32_t>& old_of_new) {
@@ -26,7 +31,10 @@ void PermuteVector(Vector& values, const std::vector<std::uint32_t>& old_of_new)
 
 void World::Impl::MaybeReorder() {
   if (!grid_) return;  // AllPairs visits every element anyway
-  if (++events_since_reorder_ < kEventsPerElementBetweenReorders * starts_.size()) return;
+  const std::uint64_t n = starts_.size();
+  const std::uint64_t period = n < kFetchAheadMinElements ? kEventsPerElementBetweenReordersInCache
+                                                          : kEventsPerElementBetweenReorders;
+  if (++events_since_reorder_ < period * n) return;
   events_since_reorder_ = 0;
   Reorder();
 }
