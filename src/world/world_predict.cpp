@@ -214,11 +214,13 @@ Event World::Impl::FinishLinearPrediction(std::uint32_t i, const Candidate& best
   const bool meeting = best.time != kInfinity;
   Event event;
   event.time = MinOf(crossing_time, best.time);
-  const auto kind_code = static_cast<std::uint8_t>(
-      crossing ? static_cast<int>(EventKind::kCellCrossing)
-               : static_cast<int>(meeting ? EventKind::kSphereMeet : EventKind::kNone));
-  event.kind = static_cast<EventKind>(kind_code);
   const std::uint32_t keep = crossing ? 0u : ~0u;
+  // crossing ? kCellCrossing (0) : meeting ? kSphereMeet (2) : kNone (4), as arithmetic: GCC
+  // branches on the `?:` form.
+  static_assert(static_cast<int>(EventKind::kCellCrossing) == 0 &&
+                static_cast<int>(EventKind::kSphereMeet) == 2 &&
+                static_cast<int>(EventKind::kNone) == 4);
+  event.kind = static_cast<EventKind>((4u - 2u * static_cast<std::uint32_t>(meeting)) & keep);
   event.aux = static_cast<std::uint8_t>((axis * 2 + (direction > 0 ? 1 : 0)) & ~keep);
   event.target = (best.target & keep) | (kNoIndex & ~keep);
   event.target_version = best.target_version & keep;
