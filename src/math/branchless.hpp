@@ -57,4 +57,14 @@ inline double SqrtOf(double x) {
 #endif
 }
 
+/// std::round(q), the same bits, without the library call (baseline x86-64 has no rounding
+/// instruction) when |q| < 1.5: a periodic box's minimum image divides a difference of two
+/// positions in the box by its side, which gives 0 or +/-1 (a zero with q's sign, as
+/// std::round gives it). Beyond that, and for NaN, the library.
+inline double RoundNearOne(double q) {
+  const double magnitude = std::abs(q);
+  if (!(magnitude < 1.5)) return std::round(q);
+  return std::copysign(Select(magnitude >= 0.5, 1.0, 0.0), q);
+}
+
 }  // namespace sparsedyn

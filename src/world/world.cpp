@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "math/branchless.hpp"
 #include "world/overlap_index.hpp"
 #include "world/world_impl.hpp"
 
@@ -87,7 +88,7 @@ World::Impl::Impl(const WorldSettings& settings)
 Vec3 World::Impl::MinimumImage(Vec3 d) const {
   if (settings_.container.kind != Container::Kind::kPeriodicBox) return d;
   const Vec3 length = settings_.container.hi - settings_.container.lo;
-  for (int k = 0; k < 3; ++k) d[k] -= length[k] * std::round(d[k] / length[k]);
+  for (int k = 0; k < 3; ++k) d[k] -= length[k] * RoundNearOne(d[k] / length[k]);
   return d;
 }
 

@@ -57,5 +57,20 @@ TEST(Branchless, SqrtIsTheLibrarySquareRootForNonNegativeValues) {
   }
 }
 
+TEST(Branchless, RoundNearOneIsTheLibraryRoundBitForBit) {
+  std::vector<double> values = Values();
+  for (const double edge : {0.5, 1.5, 2.5, 1.0}) {
+    for (const double x : {edge, std::nextafter(edge, 0.0), std::nextafter(edge, 10.0)}) {
+      values.push_back(x);
+      values.push_back(-x);
+    }
+  }
+  scenes::Random random(9);
+  for (int i = 0; i < 100000; ++i) values.push_back(random.Uniform(-2.0, 2.0));
+  for (const double q : values) {
+    ASSERT_EQ(Bits(RoundNearOne(q)), Bits(std::round(q))) << q;
+  }
+}
+
 }  // namespace
 }  // namespace sparsedyn
