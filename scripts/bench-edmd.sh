@@ -118,8 +118,11 @@ for n in $sizes; do
   : >"$dir/edmd.txt"
   : >"$dir/ours.txt"
   for ((r = 1; r <= rounds; ++r)); do
-    read -r cpu0 coll0 < <(cd "$dir" && run_edmd ./md_settle "$dir")
-    read -r cpu1 coll1 < <(cd "$dir" && run_edmd ./md_stretch "$dir")
+    # Assignments, not process substitutions: a failed run then stops the script (set -e).
+    settle=$(cd "$dir" && run_edmd ./md_settle "$dir")
+    stretch=$(cd "$dir" && run_edmd ./md_stretch "$dir")
+    read -r cpu0 coll0 <<<"$settle"
+    read -r cpu1 coll1 <<<"$stretch"
     theirs=$(awk -v a="$cpu0" -v b="$cpu1" -v c="$coll0" -v d="$coll1" \
       'BEGIN { if (b <= a) print "nan"; else printf "%.0f\n", (d - c) / (b - a) }')
     ours=$(run_ours "$n")

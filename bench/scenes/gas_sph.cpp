@@ -3,11 +3,24 @@
 // count, the box sides, then "a x y z radius" per sphere), so that scripts/bench-edmd.sh runs
 // Smallenburg's EDMD on the same spheres as gas_bench (EDMD draws its own velocities).
 //   gas_sph N [PACKING [SEED]] > init.sph
+#include <charconv>
 #include <cstdio>
-#include <cstdlib>
-#include <string>
+#include <cstring>
+#include <system_error>
 
 #include "scenes/gas.hpp"
+
+namespace {
+
+// The whole of `text` as a number of type T (no sign on unsigned types, nothing after it).
+template <typename T>
+bool Parse(const char* text, T& value) {
+  const char* end = text + std::strlen(text);
+  const auto [stop, error] = std::from_chars(text, end, value);
+  return error == std::errc() && stop == end && stop != text;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2 || argc > 4) {
@@ -15,12 +28,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   sparsedyn::scenes::GasOptions options;
-  try {
-    options.n = static_cast<std::uint32_t>(std::stoul(argv[1]));
-    if (argc > 2) options.packing = std::stod(argv[2]);
-    if (argc > 3) options.seed = std::stoull(argv[3]);
-  } catch (const std::exception&) {
-    std::fprintf(stderr, "%s: N, PACKING and SEED must be numbers\n", argv[0]);
+  if (!Parse(argv[1], options.n) || (argc > 2 && !Parse(argv[2], options.packing)) ||
+      (argc > 3 && !Parse(argv[3], options.seed))) {
+    std::fprintf(stderr, "%s: N and SEED must be whole numbers >= 0, PACKING a number\n", argv[0]);
     return 2;
   }
   const auto bodies = sparsedyn::scenes::MakeGasBodies(options);

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 # ctest: gas_sph writes the snapshot scripts/bench-edmd.sh hands EDMD (the count, three equal
-# box sides, one "a x y z 0.5" line per sphere inside the box), and refuses a bad N.
+# box sides, one "a x y z 0.5" line per sphere inside the box), and refuses a bad N or seed.
 #   cmake -DPROGRAM=path/to/gas_sph -P gas_sph_check.cmake
 execute_process(COMMAND ${PROGRAM} 40 OUTPUT_VARIABLE out RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
@@ -38,7 +38,13 @@ foreach(line IN LISTS spheres)
     endif()
   endforeach()
 endforeach()
-execute_process(COMMAND ${PROGRAM} forty RESULT_VARIABLE status ERROR_VARIABLE error)
-if(status EQUAL 0 OR NOT error MATCHES "must be numbers")
-  message(FATAL_ERROR "gas_sph forty: status ${status}, message '${error}'")
+foreach(bad IN ITEMS forty -5 40x "")
+  execute_process(COMMAND ${PROGRAM} "${bad}" RESULT_VARIABLE status ERROR_VARIABLE error)
+  if(NOT status EQUAL 2 OR NOT error MATCHES "must be whole numbers")
+    message(FATAL_ERROR "gas_sph '${bad}': status ${status}, message '${error}'")
+  endif()
+endforeach()
+execute_process(COMMAND ${PROGRAM} 40 0.05 1x RESULT_VARIABLE status ERROR_VARIABLE error)
+if(NOT status EQUAL 2 OR NOT error MATCHES "must be whole numbers")
+  message(FATAL_ERROR "gas_sph 40 0.05 1x: status ${status}, message '${error}'")
 endif()
