@@ -81,7 +81,7 @@ void CalendarQueue::Unlink(std::uint32_t slot) {
   if (entry.next != kNoIndex) entries_[entry.next].prev = entry.prev;
 }
 
-void CalendarQueue::Set(std::uint32_t slot, double time, EventKind kind) {
+void CalendarQueue::SetAnyhow(std::uint32_t slot, double time, EventKind kind) {
   SPARSEDYN_ASSERT(!std::isnan(time), "CalendarQueue::Set: time is NaN");
   if (slot >= entries_.size()) {
     entries_.resize(slot + 1, Entry{0.0, kNoIndex, kNoIndex, kAbsent, EventKind::kNone});

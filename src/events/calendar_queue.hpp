@@ -81,7 +81,10 @@ class CalendarQueue {
   void Prefetch(std::uint32_t slot) const { __builtin_prefetch(&entries_[slot]); }
 
   /// Inserts the slot or moves its entry to the new key. `time` must not be NaN.
-  void Set(std::uint32_t slot, double time, EventKind kind);
+  void Set(std::uint32_t slot, double time, EventKind kind) {
+    if (MoveHeadToBucket(slot, time, kind)) return;
+    SetAnyhow(slot, time, kind);
+  }
 
   /// Removes the slot's entry if it has one.
   void Erase(std::uint32_t slot);
@@ -141,6 +144,38 @@ class CalendarQueue {
   }
 
   std::uint32_t Classify(double time) const;
+  // Set's common case, inline: the head's slot (the element an event was just handled for)
+  // moves to a later bucket or beyond the year. Returns false, changing nothing, in any other
+  // case, which SetAnyhow handles (the same result either way).
+  bool MoveHeadToBucket(std::uint32_t slot, double time, EventKind kind) {
+    if (slot >= entries_.size() || near_heap_) return false;
+    Entry& entry = entries_[slot];
+    const std::uint32_t at = entry.next;
+    if (entry.where != kNear || at != top_) return false;
+    const double q = (time - origin_) * inverse_width_;
+    if (!(q >= current_end_)) return false;  // the current bucket, or NaN
+    const std::uint32_t where = q >= year_end_ ? kOverflow : static_cast<std::uint32_t>(q);
+    // Out of the current list: its last entry fills the hole.
+    const Node last = near_.back();
+    near_.pop_back();
+    if (at != near_.size()) NearPlace(at, last);
+    // Onto the front of the bucket's (or the overflow) list.
+    entry.time = time;
+    entry.kind = kind;
+    entry.where = where;
+    entry.prev = kNoIndex;
+    std::uint32_t& head = HeadOf(where);
+    entry.next = head;
+    if (head != kNoIndex) entries_[head].prev = slot;
+    head = slot;
+    if (near_.empty()) {
+      Refill();
+    } else {
+      FindTop();
+    }
+    return true;
+  }
+  void SetAnyhow(std::uint32_t slot, double time, EventKind kind);
   // Classify's bounds as doubles, kept with current_ and the bucket count: converting them
   // on every call (a size_t to double takes several instructions) was a third of Classify.
   void SetCurrent(std::uint32_t bucket) {
