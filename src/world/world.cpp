@@ -239,6 +239,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
       ShareGridLinks();  // starts_ may have moved
       if (grid_) grid_->Insert(i, def.position);
       if (all_pairs_) all_pairs_->Insert(i, def.position);
+      SetReorderPeriod();
       PredictFull(i);
     }
   }
@@ -306,6 +307,7 @@ void World::Impl::Start() {
   fetch_ahead_ = straight_lines_ && grid_ && n >= kFetchAheadMinElements;
   if (grid_) Reorder();  // start in spatial order
   events_since_reorder_ = 0;
+  SetReorderPeriod();
   if (polyhedra_) EngageOverlappingAtStart();
   for (std::uint32_t i = 0; i < n; ++i) PredictFull(i);
 }

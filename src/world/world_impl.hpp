@@ -149,6 +149,8 @@ class World::Impl {
   std::vector<std::uint32_t> public_of_;    // internal index -> public index
   std::vector<std::uint32_t> internal_of_;  // public index -> internal index
   std::uint64_t events_since_reorder_ = 0;
+  std::uint64_t reorder_period_ =  // events between renumberings (none: no grid)
+      std::numeric_limits<std::uint64_t>::max();
 
   bool started_ = false;
   bool has_envelopes_ = false;
@@ -174,7 +176,13 @@ class World::Impl {
   Vec3 WrapIntoBox(Vec3 p) const;
 
   // --- memory order (world_reorder.cpp) ---
-  void MaybeReorder();
+  /// Counts an event and renumbers the elements when reorder_period_ of them have passed.
+  void MaybeReorder() {
+    if (++events_since_reorder_ < reorder_period_) return;
+    events_since_reorder_ = 0;
+    Reorder();
+  }
+  void SetReorderPeriod();  // after the element count or the broad phase changed
   void Reorder();
   BodyId PublicId(std::uint32_t i) const { return BodyId{public_of_[i], 0}; }
 

@@ -3,6 +3,7 @@
 // cells, so that elements near in space are near in memory and a prediction's scan of the 27
 // cells around an element touches a few cache lines instead of one per neighbour.
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 #include "world/world_impl.hpp"
@@ -29,14 +30,14 @@ void PermuteVector(Vector& values, const std::vector<std::uint32_t>& old_of_new)
 
 }  // namespace
 
-void World::Impl::MaybeReorder() {
-  if (!grid_) return;  // AllPairs visits every element anyway
+void World::Impl::SetReorderPeriod() {
+  // Worked out here rather than per event (the event loop's check is then one comparison).
   const std::uint64_t n = starts_.size();
-  const std::uint64_t period = n < kFetchAheadMinElements ? kEventsPerElementBetweenReordersInCache
-                                                          : kEventsPerElementBetweenReorders;
-  if (++events_since_reorder_ < period * n) return;
-  events_since_reorder_ = 0;
-  Reorder();
+  const std::uint64_t per_element = n < kFetchAheadMinElements
+                                        ? kEventsPerElementBetweenReordersInCache
+                                        : kEventsPerElementBetweenReorders;
+  // AllPairs visits every element anyway; an empty world has nothing to renumber.
+  reorder_period_ = grid_ && n > 0 ? per_element * n : std::numeric_limits<std::uint64_t>::max();
 }
 
 void World::Impl::Reorder() {
