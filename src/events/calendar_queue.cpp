@@ -395,24 +395,11 @@ std::size_t CalendarQueue::MemoryBytes() const {
 
 // --- The current bucket: an unsorted list, or beyond kListLimit an indexed binary heap ------
 
-void CalendarQueue::FindTop() {
-  // The earliest entry by a scan of selects: no branch on the (random) comparisons.
-  std::uint32_t best = 0;
-  const auto size = static_cast<std::uint32_t>(near_.size());
-  for (std::uint32_t at = 1; at < size; ++at) best = Less(near_[at], near_[best]) ? at : best;
-  top_ = best;
-}
-
 void CalendarQueue::MakeHeap() {
   // Floyd's bottom-up heap construction; the heap stays until the bucket is used up.
   near_heap_ = true;
   top_ = 0;
   for (auto i = static_cast<std::uint32_t>(near_.size() / 2); i-- > 0;) NearSiftDown(i);
-}
-
-void CalendarQueue::NearPlace(std::uint32_t at, const Node& node) {
-  near_[at] = node;
-  entries_[SlotOf(node)].next = at;
 }
 
 void CalendarQueue::NearPush(const Node& node) {

@@ -7,6 +7,7 @@
 
 #include "events/event.hpp"
 #include "events/heap_queue.hpp"
+#include "math/branchless.hpp"
 #include "math/huge_pages.hpp"
 #include "sparsedyn/assert.hpp"
 
@@ -154,20 +155,29 @@ class CalendarQueue {
     if (entry.where != kNear || at != top_) return false;
     const double q = (time - origin_) * inverse_width_;
     if (!(q >= current_end_)) return false;  // the current bucket, or NaN
-    const std::uint32_t where = q >= year_end_ ? kOverflow : static_cast<std::uint32_t>(q);
+    // A bucket or the overflow list, and whether that list was empty, decided by selects:
+    // both are coin tosses for the branch predictor after every event of a gas.
+    const bool beyond = q >= year_end_;
+    const auto bucket = static_cast<std::uint32_t>(MinOf(q, year_end_ - 1.0));  // in range
+    const std::uint32_t overflow = 0u - static_cast<std::uint32_t>(beyond);
+    const std::uint32_t where = (bucket & ~overflow) | (kOverflow & overflow);
     // Out of the current list: its last entry fills the hole.
     const Node last = near_.back();
     near_.pop_back();
     if (at != near_.size()) NearPlace(at, last);
-    // Onto the front of the bucket's (or the overflow) list.
+    // Onto the front of the bucket's (or the overflow) list; an empty list's back link goes
+    // to a spare entry.
     entry.time = time;
     entry.kind = kind;
     entry.where = where;
     entry.prev = kNoIndex;
-    std::uint32_t& head = HeadOf(where);
-    entry.next = head;
-    if (head != kNoIndex) entries_[head].prev = slot;
-    head = slot;
+    std::uint32_t* head = SelectPointer(beyond, &overflow_head_, &heads_[bucket]);
+    const std::uint32_t first = *head;
+    const bool had_first = first != kNoIndex;
+    const std::uint32_t in_range = first & (0u - static_cast<std::uint32_t>(had_first));
+    SelectPointer(had_first, &entries_[in_range], &spare_)->prev = slot;
+    entry.next = first;
+    *head = slot;
     if (near_.empty()) {
       Refill();
     } else {
@@ -196,9 +206,18 @@ class CalendarQueue {
   // The current bucket: an unsorted list with its earliest entry at top_, or, beyond
   // kListLimit entries, an indexed binary heap (top_ = 0).
   static constexpr std::size_t kListLimit = 32;
-  void FindTop();
+  void FindTop() {
+    // The earliest entry by a scan of selects: no branch on the (random) comparisons.
+    std::uint32_t best = 0;
+    const auto size = static_cast<std::uint32_t>(near_.size());
+    for (std::uint32_t at = 1; at < size; ++at) best = Less(near_[at], near_[best]) ? at : best;
+    top_ = best;
+  }
   void MakeHeap();
-  void NearPlace(std::uint32_t at, const Node& node);
+  void NearPlace(std::uint32_t at, const Node& node) {
+    near_[at] = node;
+    entries_[SlotOf(node)].next = at;
+  }
   void NearPush(const Node& node);
   void NearErase(std::uint32_t at);
   void NearUpdate(std::uint32_t at, const Node& node);
@@ -206,6 +225,7 @@ class CalendarQueue {
   void NearSiftDown(std::uint32_t at);
 
   BigVector<Entry> entries_;                // per slot
+  Entry spare_{};                           // takes the back link written to an empty list
   std::vector<Node> near_;                  // the current bucket and anything earlier
   std::uint32_t top_ = 0;                   // the earliest of near_
   bool near_heap_ = false;                  // near_ is a heap (else an unsorted list)

@@ -25,6 +25,14 @@ inline double Select(bool condition, double a, double b) {
                                (std::bit_cast<std::uint64_t>(b) & ~mask));
 }
 
+/// condition ? a : b for pointers (GCC branches on `?:` here too).
+template <typename T>
+inline T* SelectPointer(bool condition, T* a, T* b) {
+  const std::uintptr_t mask = std::uintptr_t{0} - static_cast<std::uintptr_t>(condition);
+  return reinterpret_cast<T*>((reinterpret_cast<std::uintptr_t>(a) & mask) |
+                              (reinterpret_cast<std::uintptr_t>(b) & ~mask));
+}
+
 /// std::max(a, b), i.e. a < b ? b : a
 inline double MaxOf(double a, double b) {
 #if defined(__SSE2__)

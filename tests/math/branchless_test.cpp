@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -43,6 +44,21 @@ TEST(Branchless, SelectMaxMinAreThePlainExpressionsBitForBit) {
       EXPECT_EQ(Bits(MinOf(a, b)), Bits(a < b ? a : b)) << a << " " << b;
     }
   }
+}
+
+// SelectPointer picks like `?:`, for pointers of any alignment, null and equal ones included.
+TEST(Branchless, SelectPointerIsTheConditionalExpression) {
+  std::array<double, 3> values{1, 2, 3};
+  const std::array<double*, 4> pointers{&values[0], &values[2], nullptr, &values[0]};
+  for (double* a : pointers) {
+    for (double* b : pointers) {
+      EXPECT_EQ(SelectPointer(true, a, b), a);
+      EXPECT_EQ(SelectPointer(false, a, b), b);
+    }
+  }
+  char bytes[3] = {};
+  EXPECT_EQ(SelectPointer(true, &bytes[1], &bytes[2]), &bytes[1]);  // odd addresses
+  EXPECT_EQ(SelectPointer(false, &bytes[1], &bytes[2]), &bytes[2]);
 }
 
 TEST(Branchless, SqrtIsTheLibrarySquareRootForNonNegativeValues) {
