@@ -84,6 +84,7 @@ class CalendarQueue {
   /// Inserts the slot or moves its entry to the new key. `time` must not be NaN.
   void Set(std::uint32_t slot, double time, EventKind kind) {
     if (MoveHeadToBucket(slot, time, kind)) return;
+    if (MoveListedToBucket(slot, time, kind)) return;
     SetAnyhow(slot, time, kind);
   }
 
@@ -155,21 +156,55 @@ class CalendarQueue {
     if (entry.where != kNear || at != top_) return false;
     const double q = (time - origin_) * inverse_width_;
     if (!(q >= current_end_)) return false;  // the current bucket, or NaN
-    // A bucket or the overflow list, and whether that list was empty, decided by selects:
-    // both are coin tosses for the branch predictor after every event of a gas.
-    const bool beyond = q >= year_end_;
-    const auto bucket = static_cast<std::uint32_t>(MinOf(q, year_end_ - 1.0));  // in range
-    const std::uint32_t overflow = 0u - static_cast<std::uint32_t>(beyond);
-    const std::uint32_t where = (bucket & ~overflow) | (kOverflow & overflow);
     // Out of the current list: its last entry fills the hole.
     const Node last = near_.back();
     near_.pop_back();
     if (at != near_.size()) NearPlace(at, last);
-    // Onto the front of the bucket's (or the overflow) list; an empty list's back link goes
-    // to a spare entry.
+    // Onto the front of the bucket's (or the overflow) list: which one, and whether it was
+    // empty, are coin tosses for a branch predictor after every event of a gas (selects).
     entry.time = time;
     entry.kind = kind;
-    entry.where = where;
+    LinkAtFront(entry, slot, q);
+    if (near_.empty()) {
+      Refill();
+    } else {
+      FindTop();
+    }
+    return true;
+  }
+  // Set's second case, inline: a slot in a later bucket or the overflow list (a collision's
+  // second element) moves to a later bucket or beyond the year. Unlinked and linked again with
+  // selects instead of branches (whether its neighbours in the list exist is a coin toss).
+  // The list orders do not matter: a bucket is searched when it becomes current.
+  bool MoveListedToBucket(std::uint32_t slot, double time, EventKind kind) {
+    if (slot >= entries_.size()) return false;
+    Entry& entry = entries_[slot];
+    const std::uint32_t was = entry.where;
+    if (was == kNear || was == kAbsent) return false;
+    const double q = (time - origin_) * inverse_width_;
+    if (!(q >= current_end_)) return false;  // the current bucket, or NaN
+    // Out of its list: the link that names it (its predecessor's, or the list's head) skips it.
+    const std::uint32_t prev = entry.prev, next = entry.next;
+    const bool has_prev = prev != kNoIndex, has_next = next != kNoIndex;
+    const bool was_beyond = was == kOverflow;
+    std::uint32_t* list = SelectPointer(
+        was_beyond, &overflow_head_, &heads_[was & (0u - static_cast<std::uint32_t>(!was_beyond))]);
+    *SelectPointer(has_prev, &entries_[prev & (0u - static_cast<std::uint32_t>(has_prev))].next,
+                   list) = next;
+    SelectPointer(has_next, &entries_[next & (0u - static_cast<std::uint32_t>(has_next))], &spare_)
+        ->prev = prev;
+    LinkAtFront(entry, slot, q);
+    entry.time = time;
+    entry.kind = kind;
+    return true;
+  }
+  // Puts `entry` (slot `slot`, bucket key q >= current_end_) at the front of the list of its
+  // bucket, or of the overflow list beyond the year, without branches on the data.
+  void LinkAtFront(Entry& entry, std::uint32_t slot, double q) {
+    const bool beyond = q >= year_end_;
+    const auto bucket = static_cast<std::uint32_t>(MinOf(q, year_end_ - 1.0));  // in range
+    const std::uint32_t overflow = 0u - static_cast<std::uint32_t>(beyond);
+    entry.where = (bucket & ~overflow) | (kOverflow & overflow);
     entry.prev = kNoIndex;
     std::uint32_t* head = SelectPointer(beyond, &overflow_head_, &heads_[bucket]);
     const std::uint32_t first = *head;
@@ -178,12 +213,6 @@ class CalendarQueue {
     SelectPointer(had_first, &entries_[in_range], &spare_)->prev = slot;
     entry.next = first;
     *head = slot;
-    if (near_.empty()) {
-      Refill();
-    } else {
-      FindTop();
-    }
-    return true;
   }
   void SetAnyhow(std::uint32_t slot, double time, EventKind kind);
   // Classify's bounds as doubles, kept with current_ and the bucket count: converting them
