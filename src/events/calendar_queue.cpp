@@ -44,10 +44,9 @@ std::uint32_t CalendarQueue::Classify(double time) const {
   // multiplication by a positive constant are monotone), so an earlier bucket never holds a
   // later time. NaN q (t and the origin the same infinity) goes to the current bucket, which orders
   // exactly.
-  const double q = (time - origin_) * inverse_width_;
+  const double q = Key(time);
   if (!(q >= current_end_)) return kNear;
-  if (q >= year_end_) return kOverflow;
-  return static_cast<std::uint32_t>(q);
+  return ListOf(q);
 }
 
 void CalendarQueue::Link(std::uint32_t slot, std::uint32_t where) {
@@ -55,14 +54,7 @@ void CalendarQueue::Link(std::uint32_t slot, std::uint32_t where) {
     NearPush(NodeOf(slot));
     return;
   }
-  // Push at the front of the bucket's (or overflow) list.
-  Entry& entry = entries_[slot];
-  std::uint32_t& head = HeadOf(where);
-  entry.where = where;
-  entry.prev = kNoIndex;
-  entry.next = head;
-  if (head != kNoIndex) entries_[head].prev = slot;
-  head = slot;
+  ListLink(entries_[slot], slot, where);
 }
 
 void CalendarQueue::Unlink(std::uint32_t slot) {
@@ -73,12 +65,7 @@ void CalendarQueue::Unlink(std::uint32_t slot) {
     NearErase(entry.next);
     return;
   }
-  if (entry.prev != kNoIndex) {
-    entries_[entry.prev].next = entry.next;
-  } else {
-    HeadOf(where) = entry.next;
-  }
-  if (entry.next != kNoIndex) entries_[entry.next].prev = entry.prev;
+  ListUnlink(entry, where);
 }
 
 void CalendarQueue::SetAnyhow(std::uint32_t slot, double time, EventKind kind) {
@@ -418,19 +405,13 @@ void CalendarQueue::NearPush(const Node& node) {
 }
 
 void CalendarQueue::NearErase(std::uint32_t at) {
+  if (!near_heap_) {
+    ListErase(at);
+    return;
+  }
   const Node last = near_.back();
   near_.pop_back();
   const auto size = static_cast<std::uint32_t>(near_.size());
-  if (!near_heap_) {
-    // The last entry fills the hole; the earliest is looked for again only if it left.
-    if (at != size) NearPlace(at, last);
-    if (top_ == at) {
-      FindTop();
-    } else if (top_ == size) {
-      top_ = at;  // the earliest was the last entry, now at `at`
-    }
-    return;
-  }
   if (at == size) return;
   NearPlace(at, last);
   if (at > 0 && Less(last, near_[(at - 1) / 2])) {

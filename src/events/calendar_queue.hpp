@@ -141,11 +141,46 @@ class CalendarQueue {
   Node NodeOf(std::uint32_t slot) const {
     return {entries_[slot].time, (static_cast<std::uint64_t>(entries_[slot].kind) << 32) | slot};
   }
-  std::uint32_t& HeadOf(std::uint32_t where) {
-    return where == kOverflow ? overflow_head_ : heads_[where];
-  }
 
+  // A time's bucket key: buckets are its whole part, from 0 at the origin.
+  double Key(double time) const { return (time - origin_) * inverse_width_; }
   std::uint32_t Classify(double time) const;
+  // The list of a key at or after the current bucket's end: its bucket, or beyond the year the
+  // overflow list. Selects: which one is a coin toss after every event of a gas.
+  std::uint32_t ListOf(double q) const {
+    const auto bucket = static_cast<std::uint32_t>(MinOf(q, year_end_ - 1.0));  // in range
+    const bool beyond = q >= year_end_;
+    return ZeroUnless(!beyond, bucket) | ZeroUnless(beyond, kOverflow);
+  }
+  // The head of a bucket's list, or of the overflow list (kOverflow), without a branch.
+  std::uint32_t& HeadOf(std::uint32_t list) {
+    const bool beyond = list == kOverflow;
+    return *SelectPointer(beyond, &overflow_head_, &heads_[ZeroUnless(!beyond, list)]);
+  }
+  // The entry `index` names, or the spare one when it names none (kNoIndex): the target of a
+  // link written without a branch on whether there is a neighbour.
+  Entry& EntryOrSpare(std::uint32_t index) {
+    const bool some = index != kNoIndex;
+    return *SelectPointer(some, &entries_[ZeroUnless(some, index)], &spare_);
+  }
+  // Puts `entry` (slot `slot`) at the front of `list` (a bucket or kOverflow), and takes it out
+  // of the list it is in: intrusive doubly linked lists, relinked without branches on the data
+  // (whether a list is empty, whether an entry has neighbours: coin tosses in a gas, known
+  // late, when the links arrive from memory).
+  void ListLink(Entry& entry, std::uint32_t slot, std::uint32_t list) {
+    std::uint32_t& head = HeadOf(list);
+    entry.where = list;
+    entry.prev = kNoIndex;
+    entry.next = head;
+    EntryOrSpare(head).prev = slot;
+    head = slot;
+  }
+  void ListUnlink(const Entry& entry, std::uint32_t list) {
+    const bool first = entry.prev == kNoIndex;
+    *SelectPointer(first, &HeadOf(list), &entries_[ZeroUnless(!first, entry.prev)].next) =
+        entry.next;
+    EntryOrSpare(entry.next).prev = entry.prev;
+  }
   // Set's common case, inline: the head's slot (the element an event was just handled for)
   // moves to a later bucket or beyond the year. Returns false, changing nothing, in any other
   // case, which SetAnyhow handles (the same result either way).
@@ -154,65 +189,30 @@ class CalendarQueue {
     Entry& entry = entries_[slot];
     const std::uint32_t at = entry.next;
     if (entry.where != kNear || at != top_) return false;
-    const double q = (time - origin_) * inverse_width_;
+    const double q = Key(time);
     if (!(q >= current_end_)) return false;  // the current bucket, or NaN
-    // Out of the current list: its last entry fills the hole.
-    const Node last = near_.back();
-    near_.pop_back();
-    if (at != near_.size()) NearPlace(at, last);
-    // Onto the front of the bucket's (or the overflow) list: which one, and whether it was
-    // empty, are coin tosses for a branch predictor after every event of a gas (selects).
+    ListErase(at);
     entry.time = time;
     entry.kind = kind;
-    LinkAtFront(entry, slot, q);
-    if (near_.empty()) {
-      Refill();
-    } else {
-      FindTop();
-    }
+    ListLink(entry, slot, ListOf(q));
+    if (near_.empty()) Refill();
     return true;
   }
   // Set's second case, inline: a slot in a later bucket or the overflow list (a collision's
-  // second element) moves to a later bucket or beyond the year. Unlinked and linked again with
-  // selects instead of branches (whether its neighbours in the list exist is a coin toss).
-  // The list orders do not matter: a bucket is searched when it becomes current.
+  // second element) moves to a later bucket or beyond the year. The list orders do not
+  // matter: a bucket is searched when it becomes current.
   bool MoveListedToBucket(std::uint32_t slot, double time, EventKind kind) {
     if (slot >= entries_.size()) return false;
     Entry& entry = entries_[slot];
     const std::uint32_t was = entry.where;
     if (was == kNear || was == kAbsent) return false;
-    const double q = (time - origin_) * inverse_width_;
+    const double q = Key(time);
     if (!(q >= current_end_)) return false;  // the current bucket, or NaN
-    // Out of its list: the link that names it (its predecessor's, or the list's head) skips it.
-    const std::uint32_t prev = entry.prev, next = entry.next;
-    const bool has_prev = prev != kNoIndex, has_next = next != kNoIndex;
-    const bool was_beyond = was == kOverflow;
-    std::uint32_t* list = SelectPointer(
-        was_beyond, &overflow_head_, &heads_[was & (0u - static_cast<std::uint32_t>(!was_beyond))]);
-    *SelectPointer(has_prev, &entries_[prev & (0u - static_cast<std::uint32_t>(has_prev))].next,
-                   list) = next;
-    SelectPointer(has_next, &entries_[next & (0u - static_cast<std::uint32_t>(has_next))], &spare_)
-        ->prev = prev;
-    LinkAtFront(entry, slot, q);
+    ListUnlink(entry, was);
     entry.time = time;
     entry.kind = kind;
+    ListLink(entry, slot, ListOf(q));
     return true;
-  }
-  // Puts `entry` (slot `slot`, bucket key q >= current_end_) at the front of the list of its
-  // bucket, or of the overflow list beyond the year, without branches on the data.
-  void LinkAtFront(Entry& entry, std::uint32_t slot, double q) {
-    const bool beyond = q >= year_end_;
-    const auto bucket = static_cast<std::uint32_t>(MinOf(q, year_end_ - 1.0));  // in range
-    const std::uint32_t overflow = 0u - static_cast<std::uint32_t>(beyond);
-    entry.where = (bucket & ~overflow) | (kOverflow & overflow);
-    entry.prev = kNoIndex;
-    std::uint32_t* head = SelectPointer(beyond, &overflow_head_, &heads_[bucket]);
-    const std::uint32_t first = *head;
-    const bool had_first = first != kNoIndex;
-    const std::uint32_t in_range = first & (0u - static_cast<std::uint32_t>(had_first));
-    SelectPointer(had_first, &entries_[in_range], &spare_)->prev = slot;
-    entry.next = first;
-    *head = slot;
   }
   void SetAnyhow(std::uint32_t slot, double time, EventKind kind);
   // Classify's bounds as doubles, kept with current_ and the bucket count: converting them
@@ -246,6 +246,19 @@ class CalendarQueue {
   void NearPlace(std::uint32_t at, const Node& node) {
     near_[at] = node;
     entries_[SlotOf(node)].next = at;
+  }
+  // Takes entry `at` out of the current bucket as a list: the last entry fills the hole; the
+  // earliest is looked for again only if it left.
+  void ListErase(std::uint32_t at) {
+    const Node last = near_.back();
+    near_.pop_back();
+    const auto size = static_cast<std::uint32_t>(near_.size());
+    if (at != size) NearPlace(at, last);
+    if (top_ == at) {
+      FindTop();
+    } else if (top_ == size) {
+      top_ = at;  // the earliest was the last entry, now at `at`
+    }
   }
   void NearPush(const Node& node);
   void NearErase(std::uint32_t at);

@@ -33,6 +33,11 @@ inline T* SelectPointer(bool condition, T* a, T* b) {
                               (reinterpret_cast<std::uintptr_t>(b) & ~mask));
 }
 
+/// condition ? x : 0 for an index (a valid index to read through when the condition fails).
+inline std::uint32_t ZeroUnless(bool condition, std::uint32_t x) {
+  return x & (std::uint32_t{0} - static_cast<std::uint32_t>(condition));
+}
+
 /// std::max(a, b), i.e. a < b ? b : a
 inline double MaxOf(double a, double b) {
 #if defined(__SSE2__)

@@ -61,6 +61,14 @@ TEST(Branchless, SelectPointerIsTheConditionalExpression) {
   EXPECT_EQ(SelectPointer(false, &bytes[1], &bytes[2]), &bytes[2]);
 }
 
+// ZeroUnless keeps the index or gives 0, the largest index and kNoIndex included.
+TEST(Branchless, ZeroUnlessIsTheConditionalIndex) {
+  for (const std::uint32_t x : {0u, 1u, 7u, 0x7fffffffu, 0xfffffffeu, 0xffffffffu}) {
+    EXPECT_EQ(ZeroUnless(true, x), x);
+    EXPECT_EQ(ZeroUnless(false, x), 0u);
+  }
+}
+
 TEST(Branchless, SqrtIsTheLibrarySquareRootForNonNegativeValues) {
   scenes::Random random(8);
   for (int i = 0; i < 100000; ++i) {
