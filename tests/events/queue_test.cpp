@@ -193,6 +193,32 @@ TYPED_TEST(QueueOracle, AgreesWithReferenceOnHoldInPlaceWithAbsentSlots) {
   }
 }
 
+// A hold whose increments have a long tail: most are about one mean spacing per entry, one
+// in ten 1-6 years of a calendar queue ahead on average, one in fifty 30 years. The calendar's year
+// is used up hundreds of times, so entries wait in its overflow list through one or many year
+// ends before their bucket comes round.
+TYPED_TEST(QueueOracle, AgreesWithReferenceWithEntriesYearsAhead) {
+  for (const bool in_place : {false, true}) {
+    const std::uint64_t seed = in_place ? 4242 : 4243;
+    SCOPED_TRACE("seed=" + std::to_string(seed));
+    KeySource keys(seed);
+    Twin<TypeParam> twin;
+    // A year: 256 buckets of 2.5 mean spacings (1 / 200 each), about 3.2 time units.
+    constexpr std::uint32_t kSlots = 200;
+    for (std::uint32_t slot = 0; slot < kSlots; ++slot) {
+      twin.Set(slot, keys.Exponential(1.0), keys.Kind());
+    }
+    for (int hold = 0; hold < 60000; ++hold) {
+      const QueueTop top = twin.reference.Top();
+      if (!in_place) twin.Pop();
+      const double u = keys.Uniform();
+      const double ahead = u < 0.02 ? 100.0 : u < 0.12 ? 3.2 + 16.0 * keys.Uniform() : 1.0;
+      twin.Set(top.slot, KeySource::Quantised(top.time + keys.Exponential(ahead)), top.kind);
+      ASSERT_TRUE(twin.Agrees(top.slot)) << "hold " << hold;
+    }
+  }
+}
+
 // The World's pattern: each event re-predicts its own slot and a few others, always at or
 // after the current time, with an event spacing that drifts over twelve orders of magnitude
 // (the calendar queue must re-adapt its width both ways). The head's slot popped and set
