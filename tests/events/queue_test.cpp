@@ -219,6 +219,52 @@ TYPED_TEST(QueueOracle, AgreesWithReferenceWithEntriesYearsAhead) {
   }
 }
 
+// The World's pattern on a slot array beyond the caches (over 65,536 slots: a calendar queue
+// then fetches ahead in its refills): each event moves the head's slot (or pops and sets it
+// again) and sets or erases one or two others, with long-tailed increments (some beyond the
+// year); then a drain to a few entries (a year of 16 buckets) and a refill.
+TYPED_TEST(QueueOracle, AgreesWithReferenceOnALargeSlotArray) {
+  for (const bool in_place : {false, true}) {
+    const std::uint64_t seed = in_place ? 6060 : 6061;
+    SCOPED_TRACE("seed=" + std::to_string(seed));
+    KeySource keys(seed);
+    Twin<TypeParam> twin;
+    constexpr std::uint32_t kSlots = 70000;
+    constexpr std::uint32_t kStride = 5;  // 14,000 entries
+    for (std::uint32_t slot = 0; slot < kSlots; slot += kStride) {
+      twin.Set(slot, keys.Exponential(1.0), keys.Kind());
+    }
+    const auto ahead = [&keys] {
+      const double u = keys.Uniform();
+      return keys.Exponential(u < 0.02 ? 30.0 : u < 0.1 ? 3.0 : 1.0);
+    };
+    const auto events = [&](int count) {
+      for (int event = 0; event < count; ++event) {
+        const QueueTop top = twin.reference.Top();
+        if (!in_place) twin.Pop();
+        twin.Set(top.slot, KeySource::Quantised(top.time + ahead()), top.kind);
+        ASSERT_TRUE(twin.Agrees(top.slot)) << "event " << event;
+        const int others = keys.Uniform() < 0.5 ? 1 : 2;
+        for (int k = 0; k < others; ++k) {
+          const std::uint32_t slot = kStride * keys.Slot(kSlots / kStride);
+          if (keys.Uniform() < 0.05) {
+            twin.Erase(slot);
+          } else {
+            twin.Set(slot, top.time + ahead(), keys.Kind());
+          }
+          ASSERT_TRUE(twin.Agrees(slot)) << "event " << event;
+        }
+      }
+    };
+    events(60000);
+    while (twin.reference.Size() > 8) {
+      twin.Pop();
+      ASSERT_TRUE(twin.Agrees(0));
+    }
+    events(20000);
+  }
+}
+
 // The World's pattern: each event re-predicts its own slot and a few others, always at or
 // after the current time, with an event spacing that drifts over twelve orders of magnitude
 // (the calendar queue must re-adapt its width both ways). The head's slot popped and set
