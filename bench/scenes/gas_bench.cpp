@@ -7,9 +7,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <ctime>
+#include <optional>
+#include <string>
 
 #include "scenes/gas.hpp"
+#include "bench/support/turns.hpp"
 
 namespace sparsedyn {
 namespace {
@@ -21,12 +26,23 @@ double CollisionRate(double packing) {
   return 4 * n * g * std::sqrt(M_PI);
 }
 
+// Collisions per particle in the timed stretch: shorter at large N keeps a run within minutes
+// (10^7: ~5 million collisions). SPARSEDYN_GAS_STRETCH overrides it: A/B comparisons on a noisy
+// machine want stretches of seconds, whose time averages over the machine's short swings.
+double StretchPerParticle(std::uint32_t n) {
+  if (const char* text = std::getenv("SPARSEDYN_GAS_STRETCH")) {
+    char* end = nullptr;
+    const double value = std::strtod(text, &end);
+    if (end != text && *end == '\0' && value > 0 && std::isfinite(value)) return value;
+    std::fprintf(stderr, "SPARSEDYN_GAS_STRETCH=%s: not a positive number; ignored\n", text);
+  }
+  return n >= 10000000 ? 1.0 : (n >= 1000000 ? 4.0 : (n >= 100000 ? 10.0 : 20.0));
+}
+
 // Runs the gas of `n` bodies at `packing` and reports the counters below.
 void RunGas(benchmark::State& state, std::uint32_t n, double packing, Broadphase broadphase,
             double cells_per_body) {
-  // Shorter stretches at large N keep a run within minutes (10^7: ~5 million collisions).
-  const double per_particle =
-      n >= 10000000 ? 1.0 : (n >= 1000000 ? 4.0 : (n >= 100000 ? 10.0 : 20.0));
+  const double per_particle = StretchPerParticle(n);
   const double settle = n >= 10000000 ? 0.5 : 2.0;
   scenes::GasOptions options;
   options.n = n;
@@ -42,12 +58,24 @@ void RunGas(benchmark::State& state, std::uint32_t n, double packing, Broadphase
     const double rate = CollisionRate(packing);
     if (!world.AdvanceTo(settle / rate)) state.SkipWithError("stalled");
     const Statistics before = world.Stats();
+    std::string error;
+    const std::optional<bench::Turns> turns = bench::Turns::FromEnvironment(error);
+    if (!turns || !turns->Ready()) {
+      state.SkipWithError(turns ? "SPARSEDYN_GAS_TURNS: cannot create the READY file" : error.c_str());
+      break;
+    }
     state.ResumeTiming();
-    const auto start = std::chrono::steady_clock::now();
-    const std::clock_t cpu_start = std::clock();
-    if (!world.AdvanceTo((settle + per_particle) / rate)) state.SkipWithError("stalled");
-    cpu_seconds += static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // The stretch in slices, each on this process's turn (one slice without turns).
+    for (int slice = 1; slice <= turns->Slices(); ++slice) {
+      if (!turns->Wait()) state.SkipWithError("SPARSEDYN_GAS_TURNS: the IN pipe failed");
+      const auto start = std::chrono::steady_clock::now();
+      const std::clock_t cpu_start = std::clock();
+      const double end = settle + per_particle * slice / turns->Slices();
+      if (!world.AdvanceTo(end / rate)) state.SkipWithError("stalled");
+      cpu_seconds += static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+      seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (!turns->Pass()) state.SkipWithError("SPARSEDYN_GAS_TURNS: the OUT pipe failed");
+    }
     simulated += per_particle / rate;
     state.PauseTiming();
     const Statistics& after = world.Stats();
