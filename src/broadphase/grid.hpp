@@ -12,6 +12,7 @@
 #include "math/fast_divisor.hpp"
 #include "math/huge_pages.hpp"
 #include "sparse/mover.hpp"
+#include "sparsedyn/assert.hpp"
 #include "sparsedyn/types.hpp"
 
 namespace sparsedyn {
@@ -206,8 +207,8 @@ class Grid {
            place.at[1] < n_[1] - 1 && place.at[2] > 0 && place.at[2] < n_[2] - 1;
   }
 
-  /// For an interior `place`: calls fn(j) for every element j of the 27 cells around it, the
-  /// place's own elements included (what ForEachNeighbor visits, plus e), in another order and
+  /// For an interior `place`: calls fn(j, shift) (shift zero) for every element j of the 27
+  /// cells around it, the place's own elements included (what ForEachNeighbor visits, plus e), in another order and
   /// without a branch on which cells are empty or how long their lists are: in a gas most cells
   /// hold zero or one element, and a walk that branches on that is mispredicted every few cells.
   /// `pending` is the work list (resized to hold every element, so it never grows during a
@@ -228,6 +229,49 @@ class Grid {
     } else {
       VisitGathered<3, 3>(place.cell, new_cells_[side].data(), pending, fn);  // rows along x
     }
+  }
+
+  /// ForEachGatheredAround for any `place`, the grid's outer layer included: calls fn(j, shift)
+  /// with j's periodic image shift (as ForEachNeighbor), and for e itself (zero shift). The
+  /// grid must hold fewer than 2^26 elements (each work-list entry carries its cell).
+  template <typename Fn>
+  void ForEachGatheredAroundWrapped(const Place& place, BigVector<std::uint32_t>& pending,
+                                    Fn&& fn) const {
+    Span x, y, z;
+    Around(0, place.at[0], x);
+    Around(1, place.at[1], y);
+    Around(2, place.at[2], z);
+    VisitGatheredBlock(x, y, z, pending, fn);
+  }
+
+  /// ForEachGatheredNew for any `place`: what ForEachNewNeighbor visits, as fn(j, shift).
+  template <typename Fn>
+  void ForEachGatheredNewWrapped(const Place& place, int axis, int direction,
+                                 BigVector<std::uint32_t>& pending, Fn&& fn) const {
+    std::array<Span, 3> spans;
+    for (int k = 0; k < 3; ++k) {
+      if (k == axis) {
+        spans[k].count = 0;
+        spans[k].interior = false;
+        Single(k, place.at[k] + direction, spans[k]);
+      } else {
+        Around(k, place.at[k], spans[k]);
+      }
+    }
+    VisitGatheredBlock(spans[0], spans[1], spans[2], pending, fn);
+  }
+
+  /// The periodic image shift of element j seen from the cell at `from`, as the visits above
+  /// report it for a j in one of the 27 cells around it (zero unless the neighbourhood wraps).
+  Vec3 ImageShift(const Place& from, std::uint32_t j) const {
+    const std::array<int, 3> at = Coordinates(Links(j).cell);
+    Vec3 shift = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) {
+      const int d = at[k] - from.at[k];
+      if (d > 1) shift[k] = -length_[k];  // j across the low face: its image below
+      if (d < -1) shift[k] = length_[k];
+    }
+    return shift;
   }
 
   // The look-ahead of a gas beyond the caches (World::Impl::FetchAhead). Fetches only, for
@@ -343,12 +387,45 @@ class Grid {
         n += h != kNoIndex ? 1u : 0u;
       }
     }
+    const Vec3 no_shift = Vec3::Zero();  // interior cells
     for (std::uint32_t k = 0; k < n; ++k) {
       const std::uint32_t j = buffer[k];
       const std::uint32_t next = Links(j).next;
       buffer[n] = next;
       n += next != kNoIndex ? 1u : 0u;
-      fn(j);
+      fn(j, no_shift);
+    }
+  }
+  // VisitGathered over the cells x × y × z of any place (wrapped, or cut off by walls): each
+  // work-list entry carries its cell's position in the block (ix | iy << 2 | iz << 4) in the
+  // bits above kIndexBits, and the list successors it appends inherit it.
+  static constexpr unsigned kIndexBits = 26;
+  template <typename Fn>
+  void VisitGatheredBlock(const Span& x, const Span& y, const Span& z,
+                          BigVector<std::uint32_t>& pending, Fn& fn) const {
+    SPARSEDYN_ASSERT(elements_ < (std::size_t{1} << kIndexBits), "too many elements to gather");
+    constexpr std::uint32_t kIndexMask = (1u << kIndexBits) - 1;
+    if (pending.size() < elements_ + 28) pending.resize(elements_ + 28);
+    std::uint32_t* buffer = pending.data();
+    std::uint32_t n = 0;
+    for (std::uint32_t iz = 0; iz < static_cast<std::uint32_t>(z.count); ++iz) {
+      for (std::uint32_t iy = 0; iy < static_cast<std::uint32_t>(y.count); ++iy) {
+        const std::uint32_t row = z.offset[iz] + y.offset[iy];
+        for (std::uint32_t ix = 0; ix < static_cast<std::uint32_t>(x.count); ++ix) {
+          const std::uint32_t h = head_[row + x.offset[ix]];
+          buffer[n] = h | (ix | iy << 2 | iz << 4) << kIndexBits;  // empty: overwritten
+          n += h != kNoIndex ? 1u : 0u;
+        }
+      }
+    }
+    for (std::uint32_t k = 0; k < n; ++k) {
+      const std::uint32_t entry = buffer[k];
+      const std::uint32_t j = entry & kIndexMask;
+      const std::uint32_t next = Links(j).next;
+      buffer[n] = next | (entry & ~kIndexMask);
+      n += next != kNoIndex ? 1u : 0u;
+      const std::uint32_t at = entry >> kIndexBits;
+      fn(j, Vec3(x.shift[at & 3], y.shift[(at >> 2) & 3], z.shift[at >> 4]));
     }
   }
   // Rows of three cells along x starting at cell + offsets[r]; cells + offsets[r] one by one.

@@ -203,12 +203,14 @@ class World::Impl {
                                             double reach, double dt, Candidate& best);
   template <typename VisitNeighbors>
   void ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors&& visit);
-  /// ScanNeighbors for straight lines over what `gather(fn)` visits (a Grid gather: interior
-  /// cells, no image shifts), without branches on the data. TestGatheredOf picks the form.
-  template <bool kOneMaterial, typename Gather>
-  void TestGathered(std::uint32_t i, Candidate& best, Gather&& gather);
-  template <typename Gather>
-  void TestGatheredOf(std::uint32_t i, Candidate& best, Gather&& gather);
+  /// ScanNeighbors for straight lines over what `gather(fn)` visits (a Grid gather around i's
+  /// cell at `place`; kWrapped: one that may wrap, with image shifts), without branches on the
+  /// data. TestGatheredOf picks the form.
+  template <bool kOneMaterial, bool kWrapped, typename Gather>
+  void TestGathered(std::uint32_t i, const Grid::Place& place, Candidate& best, Gather&& gather);
+  template <bool kWrapped, typename Gather>
+  void TestGatheredOf(std::uint32_t i, const Grid::Place& place, Candidate& best,
+                      Gather&& gather);
   Event FinishPrediction(std::uint32_t i, const Candidate& best, const Grid::Place* place);
   Event FinishLinearPrediction(std::uint32_t i, const Candidate& best, const Grid::Place& place);
   double PredictWall(const Mover& mi, std::uint8_t& wall) const;

@@ -87,8 +87,9 @@ void World::Impl::ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors
   stats_.pair_tests += tests;
 }
 
-template <bool kOneMaterial, typename Gather>
-void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather) {
+template <bool kOneMaterial, bool kWrapped, typename Gather>
+void World::Impl::TestGathered(std::uint32_t i, const Grid::Place& place, Candidate& best,
+                               Gather&& gather) {
   // ScanNeighbors' straight-line test, the same numbers, over the elements a Grid gather
   // visits, without a branch on the data: whether a pair approaches, and then whether it passes
   // wide, are coin tosses in a gas, and a mispredicted branch costs more than testing both.
@@ -97,17 +98,16 @@ void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather
   // registers. i itself is among them: with dp = dv = 0 it does not approach.
   const PathStart pi = starts_[i];
   const double ri = kOneMaterial ? materials_[0].radius : Radius(i);
-  const Vec3 kNoShift = Vec3::Zero();  // interior cells: no image shift
   const ElementStart* starts = starts_.data();
   const std::uint32_t* material = material_.data();
   const Material* materials = materials_.data();
   std::uint32_t visited = 0, self = 0, hits = 0;
-  gather([&](std::uint32_t j) [[gnu::always_inline]] {
+  gather([&](std::uint32_t j, const Vec3& shift) [[gnu::always_inline]] {
     ++visited;
     self += j == i ? 1u : 0u;
     // One material (a gas): no per-body look-up, a cache miss per pair at N = 10^6.
     const double reach = ri + (kOneMaterial ? ri : materials[material[j]].radius);
-    const RelativeMotion m = RelativeMotionOf(pi, starts[j], kNoShift);
+    const RelativeMotion m = RelativeMotionOf(pi, starts[j], shift);
     gathered_[hits] = j;  // an entry the gather is done with (hits < visited)
     hits += LinearMeetingFound(m.dp_xy, m.dp_z, m.dv_xy, m.dv_z, reach) ? 1u : 0u;
   });
@@ -115,19 +115,22 @@ void World::Impl::TestGathered(std::uint32_t i, Candidate& best, Gather&& gather
   for (std::uint32_t h = 0; h < hits; ++h) {
     const std::uint32_t j = gathered_[h];
     const double reach = ri + (kOneMaterial ? ri : Radius(j));
-    const RelativeMotion m = RelativeMotionOf(pi, starts_[j], kNoShift);
+    // The shift the visit had for j (interior cells: none).
+    const Vec3 shift = kWrapped ? grid_->ImageShift(place, j) : Vec3::Zero();
+    const RelativeMotion m = RelativeMotionOf(pi, starts_[j], shift);
     const double dt =
         LinearMeetingRoot(m.dp_xy, m.dp_z, m.dv_xy, m.dv_z, [reach] { return reach; });
-    OfferLinearMeeting(pi, j, Vec3::Zero(), reach, dt, best);
+    OfferLinearMeeting(pi, j, shift, reach, dt, best);
   }
 }
 
-template <typename Gather>
-void World::Impl::TestGatheredOf(std::uint32_t i, Candidate& best, Gather&& gather) {
+template <bool kWrapped, typename Gather>
+void World::Impl::TestGatheredOf(std::uint32_t i, const Grid::Place& place, Candidate& best,
+                                 Gather&& gather) {
   if (materials_.size() == 1) {
-    TestGathered<true>(i, best, gather);
+    TestGathered<true, kWrapped>(i, place, best, gather);
   } else {
-    TestGathered<false>(i, best, gather);
+    TestGathered<false, kWrapped>(i, place, best, gather);
   }
 }
 
@@ -259,10 +262,19 @@ void World::Impl::PredictFull(std::uint32_t i) {
     return;
   }
   const Grid::Place place = grid_->PlaceOf(i);
-  if (batch_tests_ && grid_->Interior(place)) {
+  if (batch_tests_) {
+    // Most cells are interior (no wrap, fixed offsets); the outer layer has the same test with
+    // each neighbour's image shift (at N = 10^4 a seventh of the cells).
     PredictWith(i, Candidate{}, &place, [&](Candidate& best) {
-      TestGatheredOf(i, best,
-                     [&](auto&& fn) { grid_->ForEachGatheredAround(place, gathered_, fn); });
+      if (grid_->Interior(place)) {
+        TestGatheredOf<false>(i, place, best, [&](auto&& fn) {
+          grid_->ForEachGatheredAround(place, gathered_, fn);
+        });
+      } else {
+        TestGatheredOf<true>(i, place, best, [&](auto&& fn) {
+          grid_->ForEachGatheredAroundWrapped(place, gathered_, fn);
+        });
+      }
     });
     return;
   }
@@ -284,11 +296,17 @@ void World::Impl::PredictAfterCrossing(std::uint32_t i, const Grid::Place& place
     return;
   }
   ++stats_.partial_predictions;
-  if (batch_tests_ && grid_->Interior(place)) {
+  if (batch_tests_) {
     PredictWith(i, kept, &place, [&](Candidate& best) {
-      TestGatheredOf(i, best, [&](auto&& fn) {
-        grid_->ForEachGatheredNew(place, axis, direction, gathered_, fn);
-      });
+      if (grid_->Interior(place)) {
+        TestGatheredOf<false>(i, place, best, [&](auto&& fn) {
+          grid_->ForEachGatheredNew(place, axis, direction, gathered_, fn);
+        });
+      } else {
+        TestGatheredOf<true>(i, place, best, [&](auto&& fn) {
+          grid_->ForEachGatheredNewWrapped(place, axis, direction, gathered_, fn);
+        });
+      }
     });
     return;
   }

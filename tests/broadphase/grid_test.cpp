@@ -277,7 +277,10 @@ TEST(Grid, GatheredVisitsAreTheVisits) {
         visited.insert(j);
       });
       std::multiset<std::uint32_t> gathered;
-      grid.ForEachGatheredAround(place, pending, [&](std::uint32_t j) { gathered.insert(j); });
+      grid.ForEachGatheredAround(place, pending, [&](std::uint32_t j, const Vec3& shift) {
+        EXPECT_EQ(shift, Vec3::Zero());
+        gathered.insert(j);
+      });
       EXPECT_EQ(gathered, visited) << e;
       most = std::max(most, gathered.size());
       for (int axis = 0; axis < 3; ++axis) {
@@ -286,7 +289,7 @@ TEST(Grid, GatheredVisitsAreTheVisits) {
           grid.ForEachNewNeighbor(e, place, axis, direction,
                                   [&](std::uint32_t j, const Vec3&) { fresh.insert(j); });
           grid.ForEachGatheredNew(place, axis, direction, pending,
-                                  [&](std::uint32_t j) { gathered_new.insert(j); });
+                                  [&](std::uint32_t j, const Vec3&) { gathered_new.insert(j); });
           EXPECT_EQ(gathered_new, fresh) << e << " " << axis << " " << direction;
         }
       }
@@ -294,6 +297,69 @@ TEST(Grid, GatheredVisitsAreTheVisits) {
     EXPECT_GT(interior, static_cast<int>(n) / 5);
     if (n == 5000) {
       EXPECT_GT(most, 200u) << "some cells should hold long lists";
+    }
+  }
+}
+
+// The gathers for any place (the outer layer's wrap or walls included) against the walks
+// element by element: the same elements with the same image shifts (e itself with none), and
+// ImageShift gives each neighbour's shift back. Periodic grids of 3 cells along an axis (where
+// both neighbours of an outer cell wrap to the same far side) and of more; a walled grid.
+TEST(Grid, WrappedGathersAreTheVisitsWithTheirShifts) {
+  using Visit = std::pair<std::uint32_t, std::array<double, 3>>;
+  const auto visit = [](std::uint32_t j, const Vec3& shift) {
+    return Visit{j, {shift[0], shift[1], shift[2]}};
+  };
+  for (const bool periodic : {true, false}) {
+    for (const Vec3& hi : {Vec3(9, 8, 7), Vec3(3.5, 5, 12)}) {
+      Grid::Config config;
+      config.hi = hi;
+      config.periodic = periodic;
+      ASSERT_TRUE(Grid::Feasible(config));
+      const std::uint32_t n = 600;
+      Grid grid(config, n);
+      std::mt19937_64 rng(periodic ? 11 : 12);
+      std::uniform_real_distribution<double> u(0.0, 1.0);
+      for (std::uint32_t e = 0; e < n; ++e) {
+        grid.Insert(e, Vec3(hi[0] * u(rng), hi[1] * u(rng), hi[2] * u(rng)));
+      }
+      EXPECT_EQ(grid.Dimensions()[0], hi[0] < 4 ? 3 : 8);  // cells just over 1
+      BigVector<std::uint32_t> pending;
+      int outer = 0, shifted = 0;
+      for (std::uint32_t e = 0; e < n; ++e) {
+        const Grid::Place place = grid.PlaceOf(e);
+        outer += grid.Interior(place) ? 0 : 1;
+        std::multiset<Visit> visited = {visit(e, Vec3::Zero())};
+        grid.ForEachNeighbor(e, place, [&](std::uint32_t j, const Vec3& shift) {
+          visited.insert(visit(j, shift));
+          EXPECT_EQ(grid.ImageShift(place, j), shift) << e << " " << j;
+          shifted += shift.isZero(0.0) ? 0 : 1;
+        });
+        std::multiset<Visit> gathered;
+        grid.ForEachGatheredAroundWrapped(place, pending, [&](std::uint32_t j, const Vec3& shift) {
+          gathered.insert(visit(j, shift));
+        });
+        EXPECT_EQ(gathered, visited) << e;
+        for (int axis = 0; axis < 3; ++axis) {
+          for (const int direction : {-1, 1}) {
+            std::multiset<Visit> fresh, gathered_new;
+            grid.ForEachNewNeighbor(e, place, axis, direction, [&](std::uint32_t j, const Vec3& s) {
+              fresh.insert(visit(j, s));
+            });
+            grid.ForEachGatheredNewWrapped(place, axis, direction, pending,
+                                           [&](std::uint32_t j, const Vec3& s) {
+                                             gathered_new.insert(visit(j, s));
+                                           });
+            EXPECT_EQ(gathered_new, fresh) << e << " " << axis << " " << direction;
+          }
+        }
+      }
+      EXPECT_GT(outer, static_cast<int>(n) / 4);
+      if (periodic) {
+        EXPECT_GT(shifted, 100) << "the neighbourhoods should wrap";
+      } else {
+        EXPECT_EQ(shifted, 0);
+      }
     }
   }
 }
