@@ -203,13 +203,14 @@ class World::Impl {
                                             double reach, double dt, Candidate& best);
   template <typename VisitNeighbors>
   void ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors&& visit);
-  /// ScanNeighbors for straight lines over what `gather(fn)` visits (a Grid gather around i's
-  /// cell at `place`; kWrapped: one that may wrap, with image shifts), without branches on the
-  /// data. TestGatheredOf picks the form.
+  /// ScanNeighbors for straight lines over what `gather(fn)` visits (a Grid gather near i's
+  /// cell at `place`: the 27 `around` it, i included, or the 9 new ones; kWrapped: one that may
+  /// wrap, with image shifts), without branches on the data. TestGatheredOf picks the form.
   template <bool kOneMaterial, bool kWrapped, typename Gather>
-  void TestGathered(std::uint32_t i, const Grid::Place& place, Candidate& best, Gather&& gather);
+  void TestGathered(std::uint32_t i, const Grid::Place& place, bool around, Candidate& best,
+                    Gather&& gather);
   template <bool kWrapped, typename Gather>
-  void TestGatheredOf(std::uint32_t i, const Grid::Place& place, Candidate& best,
+  void TestGatheredOf(std::uint32_t i, const Grid::Place& place, bool around, Candidate& best,
                       Gather&& gather);
   Event FinishPrediction(std::uint32_t i, const Candidate& best, const Grid::Place* place);
   Event FinishLinearPrediction(std::uint32_t i, const Candidate& best, const Grid::Place& place);

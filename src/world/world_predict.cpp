@@ -88,30 +88,30 @@ void World::Impl::ScanNeighbors(std::uint32_t i, Candidate& best, VisitNeighbors
 }
 
 template <bool kOneMaterial, bool kWrapped, typename Gather>
-void World::Impl::TestGathered(std::uint32_t i, const Grid::Place& place, Candidate& best,
-                               Gather&& gather) {
+void World::Impl::TestGathered(std::uint32_t i, const Grid::Place& place, bool around,
+                               Candidate& best, Gather&& gather) {
   // ScanNeighbors' straight-line test, the same numbers, over the elements a Grid gather
   // visits, without a branch on the data: whether a pair approaches, and then whether it passes
   // wide, are coin tosses in a gas, and a mispredicted branch costs more than testing both.
   // The pairs that meet are noted (in the gather's used entries) and have their root computed
   // and certified after the visit, so that the visit makes no call and keeps i's data in
-  // registers. i itself is among them: with dp = dv = 0 it does not approach.
+  // registers. When the gather is `around` i's cell, i itself is among them (once: a grid has
+  // at least 3 cells per axis): with dp = dv = 0 it does not approach.
   const PathStart pi = starts_[i];
   const double ri = kOneMaterial ? materials_[0].radius : Radius(i);
   const ElementStart* starts = starts_.data();
   const std::uint32_t* material = material_.data();
   const Material* materials = materials_.data();
-  std::uint32_t visited = 0, self = 0, hits = 0;
+  std::uint32_t visited = 0, hits = 0;
   gather([&](std::uint32_t j, const Vec3& shift) [[gnu::always_inline]] {
     ++visited;
-    self += j == i ? 1u : 0u;
     // One material (a gas): no per-body look-up, a cache miss per pair at N = 10^6.
     const double reach = ri + (kOneMaterial ? ri : materials[material[j]].radius);
     const RelativeMotion m = RelativeMotionOf(pi, starts[j], shift);
     gathered_[hits] = j;  // an entry the gather is done with (hits < visited)
     hits += LinearMeetingFound(m.dp_xy, m.dp_z, m.dv_xy, m.dv_z, reach) ? 1u : 0u;
   });
-  stats_.pair_tests += visited - self;
+  stats_.pair_tests += visited - (around ? 1u : 0u);
   for (std::uint32_t h = 0; h < hits; ++h) {
     const std::uint32_t j = gathered_[h];
     const double reach = ri + (kOneMaterial ? ri : Radius(j));
@@ -125,12 +125,12 @@ void World::Impl::TestGathered(std::uint32_t i, const Grid::Place& place, Candid
 }
 
 template <bool kWrapped, typename Gather>
-void World::Impl::TestGatheredOf(std::uint32_t i, const Grid::Place& place, Candidate& best,
-                                 Gather&& gather) {
+void World::Impl::TestGatheredOf(std::uint32_t i, const Grid::Place& place, bool around,
+                                 Candidate& best, Gather&& gather) {
   if (materials_.size() == 1) {
-    TestGathered<true, kWrapped>(i, place, best, gather);
+    TestGathered<true, kWrapped>(i, place, around, best, gather);
   } else {
-    TestGathered<false, kWrapped>(i, place, best, gather);
+    TestGathered<false, kWrapped>(i, place, around, best, gather);
   }
 }
 
@@ -267,11 +267,11 @@ void World::Impl::PredictFull(std::uint32_t i) {
     // each neighbour's image shift (at N = 10^4 a seventh of the cells).
     PredictWith(i, Candidate{}, &place, [&](Candidate& best) {
       if (grid_->Interior(place)) {
-        TestGatheredOf<false>(i, place, best, [&](auto&& fn) {
+        TestGatheredOf<false>(i, place, /*around=*/true, best, [&](auto&& fn) {
           grid_->ForEachGatheredAround(place, gathered_, fn);
         });
       } else {
-        TestGatheredOf<true>(i, place, best, [&](auto&& fn) {
+        TestGatheredOf<true>(i, place, /*around=*/true, best, [&](auto&& fn) {
           grid_->ForEachGatheredAroundWrapped(place, gathered_, fn);
         });
       }
@@ -299,11 +299,11 @@ void World::Impl::PredictAfterCrossing(std::uint32_t i, const Grid::Place& place
   if (batch_tests_) {
     PredictWith(i, kept, &place, [&](Candidate& best) {
       if (grid_->Interior(place)) {
-        TestGatheredOf<false>(i, place, best, [&](auto&& fn) {
+        TestGatheredOf<false>(i, place, /*around=*/false, best, [&](auto&& fn) {
           grid_->ForEachGatheredNew(place, axis, direction, gathered_, fn);
         });
       } else {
-        TestGatheredOf<true>(i, place, best, [&](auto&& fn) {
+        TestGatheredOf<true>(i, place, /*around=*/false, best, [&](auto&& fn) {
           grid_->ForEachGatheredNewWrapped(place, axis, direction, gathered_, fn);
         });
       }
