@@ -305,6 +305,7 @@ void World::Impl::Start() {
   // collisions per CPU s, at 10^5 +14%, at 6x10^4 about +10%; at 3x10^4 -5% and at 10^4 -7%,
   // where the data are at hand anyway (docs/benchmarks.md, eleventh measurement).
   fetch_ahead_ = straight_lines_ && grid_ && n >= kFetchAheadMinElements;
+  linear_finish_ = straight_lines_ && grid_ && settings_.container.kind != Container::Kind::kWalledBox;
   if (grid_) Reorder();  // start in spatial order
   events_since_reorder_ = 0;
   SetReorderPeriod();

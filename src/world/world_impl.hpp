@@ -157,6 +157,7 @@ class World::Impl {
   bool straight_lines_ = false;  // no envelopes and no acceleration: the fast meeting test
   bool batch_tests_ = false;     // straight lines, few enough elements: TestGathered
   bool fetch_ahead_ = false;     // a gas on a grid beyond the caches: FetchAhead
+  bool linear_finish_ = false;   // straight lines on a grid, no walls: FinishLinearPrediction
   static constexpr std::uint32_t kBatchTestMaxElements = 1u << 18;
   static constexpr std::uint32_t kFetchAheadMinElements = 40000;
   double max_radius_ = 0.0;
@@ -212,7 +213,7 @@ class World::Impl {
   template <bool kWrapped, typename Gather>
   void TestGatheredOf(std::uint32_t i, const Grid::Place& place, bool around, Candidate& best,
                       Gather&& gather);
-  Event FinishPrediction(std::uint32_t i, const Candidate& best, const Grid::Place* place);
+  Event FinishPrediction(std::uint32_t i, const Candidate& best);
   Event FinishLinearPrediction(std::uint32_t i, const Candidate& best, const Grid::Place& place);
   double PredictWall(const Mover& mi, std::uint8_t& wall) const;
   void Schedule(std::uint32_t i, const Event& event);

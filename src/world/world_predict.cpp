@@ -160,12 +160,8 @@ double World::Impl::PredictWall(const Mover& mi, std::uint8_t& wall) const {
   return best;
 }
 
-Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best,
-                                    const Grid::Place* place) {
+Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
   static_cast<Candidate&>(prediction_[i]) = best;  // the kind is set by Schedule
-  if (straight_lines_ && grid_ && settings_.container.kind != Container::Kind::kWalledBox) {
-    return FinishLinearPrediction(i, best, *place);
-  }
   Event event;
   event.time = best.time;
   event.kind = best.time == kInfinity ? EventKind::kNone : EventKind::kSphereMeet;
@@ -208,6 +204,7 @@ Event World::Impl::FinishLinearPrediction(std::uint32_t i, const Candidate& best
   // FinishPrediction for straight lines in a periodic or open box (the gas): the crossing, then
   // the earlier of the two, with selects instead of branches (which of the two comes first is
   // a coin toss after every event of a gas).
+  static_cast<Candidate&>(prediction_[i]) = best;  // the kind is set by Schedule
   const PathStart& start = starts_[i];
   int axis = 0, direction = 1;
   const double crossing_dt =
@@ -248,7 +245,8 @@ void World::Impl::PredictWith(std::uint32_t i, Candidate best, const Grid::Place
   {
     const PhaseTimer timer(settings_.profile_phases, stats_.seconds_sparse);
     scan(best);
-    event = FinishPrediction(i, best, place);
+    event = linear_finish_ ? FinishLinearPrediction(i, best, *place)
+                           : FinishPrediction(i, best);
   }
   Schedule(i, event);
 }
