@@ -161,11 +161,8 @@ class Grid {
       VisitRows(e, place.cell, around_rows_.data(), 9, fn);
       return;
     }
-    Span x, y, z;
-    Around(0, place.at[0], x);
-    Around(1, place.at[1], y);
-    Around(2, place.at[2], z);
-    VisitBlock(e, x, y, z, fn);
+    const std::array<Span, 3> spans = AroundSpans(place);
+    VisitBlock(e, spans[0], spans[1], spans[2], fn);
   }
   template <typename Fn>
   void ForEachNeighbor(std::uint32_t e, Fn&& fn) const {
@@ -186,16 +183,7 @@ class Grid {
       }
       return;
     }
-    std::array<Span, 3> spans;
-    for (int k = 0; k < 3; ++k) {
-      if (k == axis) {
-        spans[k].count = 0;
-        spans[k].interior = false;
-        Single(k, place.at[k] + direction, spans[k]);
-      } else {
-        Around(k, place.at[k], spans[k]);
-      }
-    }
+    const std::array<Span, 3> spans = NewSpans(place, axis, direction);
     VisitBlock(e, spans[0], spans[1], spans[2], fn);
   }
 
@@ -237,27 +225,15 @@ class Grid {
   template <typename Fn>
   void ForEachGatheredAroundWrapped(const Place& place, BigVector<std::uint32_t>& pending,
                                     Fn&& fn) const {
-    Span x, y, z;
-    Around(0, place.at[0], x);
-    Around(1, place.at[1], y);
-    Around(2, place.at[2], z);
-    VisitGatheredBlock(x, y, z, pending, fn);
+    const std::array<Span, 3> spans = AroundSpans(place);
+    VisitGatheredBlock(spans[0], spans[1], spans[2], pending, fn);
   }
 
   /// ForEachGatheredNew for any `place`: what ForEachNewNeighbor visits, as fn(j, shift).
   template <typename Fn>
   void ForEachGatheredNewWrapped(const Place& place, int axis, int direction,
                                  BigVector<std::uint32_t>& pending, Fn&& fn) const {
-    std::array<Span, 3> spans;
-    for (int k = 0; k < 3; ++k) {
-      if (k == axis) {
-        spans[k].count = 0;
-        spans[k].interior = false;
-        Single(k, place.at[k] + direction, spans[k]);
-      } else {
-        Around(k, place.at[k], spans[k]);
-      }
-    }
+    const std::array<Span, 3> spans = NewSpans(place, axis, direction);
     VisitGatheredBlock(spans[0], spans[1], spans[2], pending, fn);
   }
 
@@ -364,6 +340,26 @@ class Grid {
       return;
     }
     for (int d = -1; d <= 1; ++d) Single(axis, at + d, span);
+  }
+  // The block of 27 cells around `place`, and the 9 that became adjacent when it was entered
+  // across (axis, direction): the layer beyond it along the axis.
+  std::array<Span, 3> AroundSpans(const Place& place) const {
+    std::array<Span, 3> spans;
+    for (int k = 0; k < 3; ++k) Around(k, place.at[k], spans[k]);
+    return spans;
+  }
+  std::array<Span, 3> NewSpans(const Place& place, int axis, int direction) const {
+    std::array<Span, 3> spans;
+    for (int k = 0; k < 3; ++k) {
+      if (k == axis) {
+        spans[k].count = 0;
+        spans[k].interior = false;
+        Single(k, place.at[k] + direction, spans[k]);
+      } else {
+        Around(k, place.at[k], spans[k]);
+      }
+    }
+    return spans;
   }
   // The runs of kRun consecutive cells from cell + offsets[r] on (r < kRuns): their heads are
   // written to `pending` first, each counted only if not empty (a select, not a branch; a run
