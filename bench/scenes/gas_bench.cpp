@@ -13,8 +13,8 @@
 #include <optional>
 #include <string>
 
-#include "scenes/gas.hpp"
 #include "bench/support/turns.hpp"
+#include "scenes/gas.hpp"
 
 namespace sparsedyn {
 namespace {
