@@ -11,6 +11,7 @@
 #include "math/branchless.hpp"
 #include "math/fast_divisor.hpp"
 #include "math/huge_pages.hpp"
+#include "math/prefetch.hpp"
 #include "sparse/mover.hpp"
 #include "sparsedyn/assert.hpp"
 #include "sparsedyn/types.hpp"
@@ -257,17 +258,7 @@ class Grid {
   /// Fetches the head rows of the 27 cells around `cell`.
   void FetchAround(std::uint32_t cell) const {
     for (const std::int32_t offset : around_rows_) {
-      __builtin_prefetch(&head_[cells_.Remainder(cell + static_cast<std::uint32_t>(offset))]);
-    }
-  }
-  /// Once those heads are at hand: calls fn(j) for the first element j of each non-empty cell
-  /// of the 27 around `cell` (for the caller to fetch its data, and with them its links).
-  template <typename Fn>
-  void FetchListsAround(std::uint32_t cell, Fn&& fn) const {
-    for (const std::int32_t offset : around_cells_) {
-      const std::uint32_t j = head_[cells_.Remainder(cell + static_cast<std::uint32_t>(offset))];
-      if (j == kNoIndex) continue;
-      fn(j);
+      Prefetch(&head_[cells_.Remainder(cell + static_cast<std::uint32_t>(offset))]);
     }
   }
   /// The cell across (axis, direction) from `cell`, wrapped into the grid as an index only.

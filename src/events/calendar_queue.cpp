@@ -111,7 +111,7 @@ int CalendarQueue::Upcoming(std::uint32_t* out, int count) const {
   // The current bucket's entries after its earliest, in order: the earliest 14 of the list;
   // of a heap, the three levels below the root (14 entries), which hold the next three for
   // certain (the k-th entry after the root is on one of the k levels below it).
-  std::array<Node, 14> near{};
+  std::array<Node, 14> near;  // not value-initialised: a sixth of the call
   std::size_t taken = 0;
   const std::size_t end = near_heap_ ? std::min<std::size_t>(near_.size(), 15) : near_.size();
   for (std::size_t at = 0; at < end; ++at) {
@@ -199,11 +199,11 @@ void CalendarQueue::Refill() {
         if (head == kNoIndex) continue;
         if (first) {
           const std::uint32_t second = entries_[head].next;
-          if (second != kNoIndex) __builtin_prefetch(&entries_[second]);
+          if (second != kNoIndex) sparsedyn::Prefetch(&entries_[second]);
           first = false;
           continue;
         }
-        __builtin_prefetch(&entries_[head]);
+        sparsedyn::Prefetch(&entries_[head]);
         break;
       }
     }

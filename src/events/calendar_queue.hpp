@@ -9,6 +9,7 @@
 #include "events/heap_queue.hpp"
 #include "math/branchless.hpp"
 #include "math/huge_pages.hpp"
+#include "math/prefetch.hpp"
 #include "sparsedyn/assert.hpp"
 
 namespace sparsedyn {
@@ -79,7 +80,7 @@ class CalendarQueue {
   /// event's handling may move entries. Returns how many it wrote.
   int Upcoming(std::uint32_t* out, int count) const;
   /// Fetches `slot`'s entry into the caches ahead of a Set.
-  void Prefetch(std::uint32_t slot) const { __builtin_prefetch(&entries_[slot]); }
+  void Prefetch(std::uint32_t slot) const { sparsedyn::Prefetch(&entries_[slot]); }
 
   /// Inserts the slot or moves its entry to the new key. `time` must not be NaN.
   void Set(std::uint32_t slot, double time, EventKind kind) {

@@ -56,13 +56,13 @@ Status World::Impl::AdvanceTo(double t) {
 }
 
 void World::Impl::FetchStart(std::uint32_t e) const {
-  __builtin_prefetch(&starts_[e]);  // one line: the path start and the grid links
+  Prefetch(&starts_[e]);  // one line: the path start and the grid links
 }
 
 void World::Impl::FetchElement(std::uint32_t e) const {
   FetchStart(e);
-  __builtin_prefetch(&prediction_[e]);
-  __builtin_prefetch(&prediction_[e].version);  // the record's end: 2 in 8 span two lines
+  Prefetch(&prediction_[e]);
+  Prefetch(&prediction_[e].version);  // the record's end: 2 in 8 span two lines
   queue_.Prefetch(e);
 }
 
@@ -78,15 +78,14 @@ void World::Impl::FetchAhead() const {
   // A pipeline over the coming events, so that each step's cache misses have events' time to
   // arrive before the step that needs them: the fourth-next element's own entries; the
   // third-next's cell heads and its meeting partner's entries (its event, fetched one event
-  // earlier, names the partner); the second-next's neighbours' path starts (which need those
-  // heads). The queue only guesses the order; a wrong guess costs the fetches. One event
-  // further ahead measured the same, one event less 4% slower at N = 10^6; the partner's cell
-  // heads as well, or the partner's entries one stage earlier (a wait for the event), slower.
+  // earlier, names the partner). The queue only guesses the order; a wrong guess costs the
+  // fetches. One event further ahead measured the same, one event less 4% slower at N = 10^6;
+  // the partner's cell heads as well, or the partner's entries one stage earlier (a wait for
+  // the event), slower. A third stage, the second-next's neighbours' path starts (27 head
+  // loads, which wait when the heads have not arrived), was 13% slower at 10^5 (2026-11-27);
+  // the compiler had been dropping it unseen (a loop of prefetches alone: see Prefetch).
   std::uint32_t next[4];
   const int count = queue_.Upcoming(next, 4);
-  if (count >= 2) {
-    grid_->FetchListsAround(CellAhead(next[1]), [this](std::uint32_t j) { FetchStart(j); });
-  }
   if (count >= 3) {
     grid_->FetchAround(CellAhead(next[2]));
     const Prediction& event = prediction_[next[2]];
@@ -94,7 +93,7 @@ void World::Impl::FetchAhead() const {
     if (event.kind == EventKind::kCellCrossing) {
       // A crossing checks whether its kept meeting's target changed path.
       const std::uint32_t kept = event.target;
-      if (kept != kNoIndex) __builtin_prefetch(&prediction_[kept].version);
+      if (kept != kNoIndex) Prefetch(&prediction_[kept].version);
     }
   }
   if (count >= 4) FetchElement(next[3]);
