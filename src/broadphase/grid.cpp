@@ -53,11 +53,6 @@ Grid::Grid(const Config& config, std::uint32_t element_capacity)
   for (int dz = -1, r = 0; dz <= 1; ++dz) {
     for (int dy = -1; dy <= 1; ++dy, ++r) around_rows_[r] = dz * sz + dy * sy - 1;
   }
-  for (int dz = -1, c = 0; dz <= 1; ++dz) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx, ++c) around_cells_[c] = dz * sz + dy * sy + dx;
-    }
-  }
   for (int direction = -1; direction <= 1; direction += 2) {
     const int side = direction > 0 ? 1 : 0;
     for (int a = -1, r = 0; a <= 1; ++a) {

@@ -486,8 +486,6 @@ class Grid {
   // direction > 0)) the 9 cells that became adjacent: 9 single cells for axis x, else 3 rows.
   std::array<std::int32_t, 9> around_rows_{};
   std::array<std::array<std::int32_t, 9>, 6> new_cells_{};
-  // The 27 around a cell one by one, for the look-ahead.
-  std::array<std::int32_t, 27> around_cells_{};
   bool periodic_ = false;
   BigVector<std::uint32_t> head_;  // first element of each cell
   // Each element's links (an intrusive singly linked list per cell: a cell holds about one
