@@ -245,7 +245,6 @@ class World::Impl {
   // The look-ahead: fetches what the next events will read while this one is handled.
   void FetchAhead() const;
   void FetchElement(std::uint32_t e) const;
-  void FetchStart(std::uint32_t e) const;  // e's path start and grid links (one line)
   std::uint32_t CellAhead(std::uint32_t e) const;
   void HandleSphereMeet(std::uint32_t i);
   void HandleWallMeet(std::uint32_t i);

@@ -55,12 +55,8 @@ Status World::Impl::AdvanceTo(double t) {
   return Status::Ok();
 }
 
-void World::Impl::FetchStart(std::uint32_t e) const {
-  Prefetch(&starts_[e]);  // one line: the path start and the grid links
-}
-
 void World::Impl::FetchElement(std::uint32_t e) const {
-  FetchStart(e);
+  Prefetch(&starts_[e]);  // one line: the path start and the grid links
   Prefetch(&prediction_[e]);
   Prefetch(&prediction_[e].version);  // the record's end: 2 in 8 span two lines
   queue_.Prefetch(e);
