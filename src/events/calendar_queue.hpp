@@ -82,6 +82,15 @@ class CalendarQueue {
   /// Fetches `slot`'s entry into the caches ahead of a Set.
   void Prefetch(std::uint32_t slot) const { sparsedyn::Prefetch(&entries_[slot]); }
 
+  /// Fetches the head of the bucket an entry at `time` would join into the caches, ahead of a
+  /// Set (nothing for the current bucket or beyond the year).
+  void PrefetchListOf(double time) const {
+    const double q = Key(time);
+    if (q >= current_end_ && q < year_end_) {
+      sparsedyn::Prefetch(&heads_[static_cast<std::uint32_t>(q)]);
+    }
+  }
+
   /// Inserts the slot or moves its entry to the new key. `time` must not be NaN.
   void Set(std::uint32_t slot, double time, EventKind kind) {
     if (MoveHeadToBucket(slot, time, kind)) return;

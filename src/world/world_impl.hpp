@@ -214,7 +214,13 @@ class World::Impl {
   void TestGatheredOf(std::uint32_t i, const Grid::Place& place, bool around, Candidate& best,
                       Gather&& gather);
   Event FinishPrediction(std::uint32_t i, const Candidate& best);
-  Event FinishLinearPrediction(std::uint32_t i, const Candidate& best, const Grid::Place& place);
+  struct Crossing {  // an element's next cell crossing: when, and across which face
+    double time;
+    int axis;
+    int direction;
+  };
+  Crossing PredictLinearCrossing(std::uint32_t i, const Grid::Place& place) const;
+  Event FinishLinearPrediction(std::uint32_t i, const Candidate& best, const Crossing& crossing);
   double PredictWall(const Mover& mi, std::uint8_t& wall) const;
   void Schedule(std::uint32_t i, const Event& event);
   void PredictEngagement(std::uint32_t k);

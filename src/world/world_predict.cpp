@@ -199,17 +199,24 @@ Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
   return event;
 }
 
-Event World::Impl::FinishLinearPrediction(std::uint32_t i, const Candidate& best,
-                                          const Grid::Place& place) {
-  // FinishPrediction for straight lines in a periodic or open box (the gas): the crossing, then
-  // the earlier of the two, with selects instead of branches (which of the two comes first is
-  // a coin toss after every event of a gas).
-  static_cast<Candidate&>(prediction_[i]) = best;  // the kind is set by Schedule
+World::Impl::Crossing World::Impl::PredictLinearCrossing(std::uint32_t i,
+                                                         const Grid::Place& place) const {
   const PathStart& start = starts_[i];
-  int axis = 0, direction = 1;
-  const double crossing_dt =
-      grid_->PredictLinearCrossing(start.p0, start.v0, place, now_ - start.t0, axis, direction);
-  const double crossing_time = MaxOf(now_, EventTime(start.t0, crossing_dt));
+  Crossing crossing{0.0, 0, 1};
+  const double dt = grid_->PredictLinearCrossing(start.p0, start.v0, place, now_ - start.t0,
+                                                 crossing.axis, crossing.direction);
+  crossing.time = MaxOf(now_, EventTime(start.t0, dt));
+  return crossing;
+}
+
+Event World::Impl::FinishLinearPrediction(std::uint32_t i, const Candidate& best,
+                                          const Crossing& next) {
+  // FinishPrediction for straight lines in a periodic or open box (the gas): the earlier of the
+  // crossing and the meeting, with selects instead of branches (which of the two comes first
+  // is a coin toss after every event of a gas).
+  static_cast<Candidate&>(prediction_[i]) = best;  // the kind is set by Schedule
+  const double crossing_time = next.time;
+  const int axis = next.axis, direction = next.direction;
   const bool crossing = crossing_time < best.time;
   const bool meeting = best.time != kInfinity;
   Event event;
@@ -244,9 +251,18 @@ void World::Impl::PredictWith(std::uint32_t i, Candidate best, const Grid::Place
   Event event;
   {
     const PhaseTimer timer(settings_.profile_phases, stats_.seconds_sparse);
-    scan(best);
-    event = linear_finish_ ? FinishLinearPrediction(i, best, *place)
-                           : FinishPrediction(i, best);
+    if (linear_finish_) {
+      // The crossing first: its time (or the kept meeting's, if earlier) is where the event is
+      // likely to go, and that bucket's head is a cache miss beyond the caches, which the scan
+      // then hides.
+      const Crossing crossing = PredictLinearCrossing(i, *place);
+      if (fetch_ahead_) queue_.PrefetchListOf(MinOf(crossing.time, best.time));
+      scan(best);
+      event = FinishLinearPrediction(i, best, crossing);
+    } else {
+      scan(best);
+      event = FinishPrediction(i, best);
+    }
   }
   Schedule(i, event);
 }
