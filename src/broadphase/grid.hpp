@@ -261,6 +261,21 @@ class Grid {
       Prefetch(&head_[cells_.Remainder(cell + static_cast<std::uint32_t>(offset))]);
     }
   }
+  /// Fetches the records of the first elements of the 9 cells that become adjacent when an
+  /// element enters `cell` across (axis, direction), ahead of ForEachGatheredNew. Reads their
+  /// heads, which FetchAround should have fetched an event or more before. Indices wrap as in
+  /// FetchAround.
+  void FetchNewFirsts(std::uint32_t cell, int axis, int direction) const {
+    const int side = axis * 2 + (direction > 0 ? 1 : 0);
+    const int runs = axis == 0 ? 9 : 3, run = axis == 0 ? 1 : 3;
+    for (int r = 0; r < runs; ++r) {
+      const std::uint32_t first = cell + static_cast<std::uint32_t>(new_cells_[side][r]);
+      for (int c = 0; c < run; ++c) {
+        const std::uint32_t h = head_[cells_.Remainder(first + static_cast<std::uint32_t>(c))];
+        if (h != kNoIndex) Prefetch(&Links(h));
+      }
+    }
+  }
   /// The cell across (axis, direction) from `cell`, wrapped into the grid as an index only.
   std::uint32_t CellAcross(std::uint32_t cell, int axis, int direction) const {
     return cells_.Remainder(cell + static_cast<std::uint32_t>(direction) * stride_[axis]);

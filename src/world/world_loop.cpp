@@ -74,12 +74,14 @@ void World::Impl::FetchAhead() const {
   // A pipeline over the coming events, so that each step's cache misses have events' time to
   // arrive before the step that needs them: the fourth-next element's own entries; the
   // third-next's cell heads and its meeting partner's entries (its event, fetched one event
-  // earlier, names the partner). The queue only guesses the order; a wrong guess costs the
-  // fetches. One event further ahead measured the same, one event less 4% slower at N = 10^6;
-  // the partner's cell heads as well, or the partner's entries one stage earlier (a wait for
-  // the event), slower. A third stage, the second-next's neighbours' path starts (27 head
-  // loads, which wait when the heads have not arrived), was 13% slower at 10^5 (2026-11-27);
-  // the compiler had been dropping it unseen (a loop of prefetches alone: see Prefetch).
+  // earlier, names the partner); the second-next crossing's new neighbours (their heads are
+  // the ones fetched one event earlier). The queue only guesses the order; a wrong guess
+  // costs the fetches. One event further ahead measured the same, one event less 4% slower at
+  // N = 10^6; the partner's cell heads as well, or the partner's entries one stage earlier (a
+  // wait for the event), slower. The last stage for every event's 27 cells was 13% slower at
+  // 10^5 (27 head loads, which wait when the heads have not arrived); for the 9 new cells of
+  // crossings only, +2.5% at 10^5 and +7.3% at 10^6, and a meeting's 27 as well, even
+  // (docs/benchmarks.md, twenty-first measurement).
   std::uint32_t next[4];
   const int count = queue_.Upcoming(next, 4);
   if (count >= 3) {
@@ -93,6 +95,14 @@ void World::Impl::FetchAhead() const {
     }
   }
   if (count >= 4) FetchElement(next[3]);
+  if (count >= 2) {
+    const Prediction& event = prediction_[next[1]];
+    if (event.kind == EventKind::kCellCrossing) {
+      const int axis = event.aux / 2, direction = 2 * (event.aux & 1) - 1;
+      grid_->FetchNewFirsts(grid_->CellAcross(grid_->CellOf(next[1]), axis, direction), axis,
+                            direction);
+    }
+  }
 }
 
 void World::Impl::Dispatch(const QueueTop& top, bool engagement) {
