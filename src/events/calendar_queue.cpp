@@ -188,23 +188,19 @@ void CalendarQueue::Refill() {
 
     // The next refills' entries, fetched while this bucket's few entries are handled: a
     // bucket's list is threaded through the slot array in no order of memory, so once the
-    // array outgrows the caches each step of that walk is a cache miss. Two deep: the first
-    // entry of the second non-empty bucket ahead, and the second entry of the next one (whose
-    // first entry the previous refill fetched, so reading its link does not wait). Not for
-    // small arrays, where the look-ahead costs instructions and saves nothing.
+    // array outgrows the caches each step of that walk is a cache miss (in Upcoming's walk
+    // too). Three deep: of the next three non-empty buckets, the first's third entry, the
+    // second's second and the third's first, so that the links read on the way are ones that
+    // earlier refills fetched (two deep: 2% slower at 10^6). Not for small arrays, where the
+    // look-ahead costs instructions and saves nothing.
     if (prefetch_) {
-      bool first = true;
-      for (std::uint32_t ahead = b + 1; ahead < count && ahead <= b + 8; ++ahead) {
-        const std::uint32_t head = heads_[ahead];
-        if (head == kNoIndex) continue;
-        if (first) {
-          const std::uint32_t second = entries_[head].next;
-          if (second != kNoIndex) sparsedyn::Prefetch(&entries_[second]);
-          first = false;
-          continue;
-        }
-        sparsedyn::Prefetch(&entries_[head]);
-        break;
+      int found = 0;
+      for (std::uint32_t ahead = b + 1; ahead < count && ahead <= b + 12 && found < 3; ++ahead) {
+        std::uint32_t slot = heads_[ahead];
+        if (slot == kNoIndex) continue;
+        for (int step = found; step < 2 && slot != kNoIndex; ++step) slot = entries_[slot].next;
+        if (slot != kNoIndex) sparsedyn::Prefetch(&entries_[slot]);
+        ++found;
       }
     }
 
