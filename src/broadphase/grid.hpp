@@ -266,15 +266,16 @@ class Grid {
   /// heads, which FetchAround should have fetched an event or more before. Indices wrap as in
   /// FetchAround.
   void FetchNewFirsts(std::uint32_t cell, int axis, int direction) const {
-    const int side = axis * 2 + (direction > 0 ? 1 : 0);
-    const int runs = axis == 0 ? 9 : 3, run = axis == 0 ? 1 : 3;
-    for (int r = 0; r < runs; ++r) {
-      const std::uint32_t first = cell + static_cast<std::uint32_t>(new_cells_[side][r]);
-      for (int c = 0; c < run; ++c) {
-        const std::uint32_t h = head_[cells_.Remainder(first + static_cast<std::uint32_t>(c))];
-        if (h != kNoIndex) Prefetch(&Links(h));
-      }
+    const std::int32_t* offsets = new_cells_[axis * 2 + (direction > 0 ? 1 : 0)].data();
+    if (axis == 0) {
+      FetchFirsts(cell, offsets, 9, 1);  // a plane across x: single cells
+    } else {
+      FetchFirsts(cell, offsets, 3, 3);  // rows along x
     }
+  }
+  /// FetchNewFirsts for the 27 cells around `cell`, ahead of ForEachGatheredAround.
+  void FetchAroundFirsts(std::uint32_t cell) const {
+    FetchFirsts(cell, around_rows_.data(), 9, 3);
   }
   /// The cell across (axis, direction) from `cell`, wrapped into the grid as an index only.
   std::uint32_t CellAcross(std::uint32_t cell, int axis, int direction) const {
@@ -309,6 +310,18 @@ class Grid {
   }
   std::uint32_t CellAt(const Vec3& p) const;
   void Link(std::uint32_t e, std::uint32_t cell);  // pushes e onto the cell's list
+
+  // The first element's record of each cell of `runs` runs of `run` consecutive cells from
+  // cell + offsets[r] on, fetched (FetchNewFirsts, FetchAroundFirsts).
+  void FetchFirsts(std::uint32_t cell, const std::int32_t* offsets, int runs, int run) const {
+    for (int r = 0; r < runs; ++r) {
+      const std::uint32_t first = cell + static_cast<std::uint32_t>(offsets[r]);
+      for (int c = 0; c < run; ++c) {
+        const std::uint32_t h = head_[cells_.Remainder(first + static_cast<std::uint32_t>(c))];
+        if (h != kNoIndex) Prefetch(&Links(h));
+      }
+    }
+  }
 
   // Up to three cells along one axis: their coordinate offsets (already multiplied by the
   // axis stride) and periodic image shifts; cells outside a walled grid are left out.

@@ -75,12 +75,13 @@ void World::Impl::FetchAhead() const {
   // arrive before the step that needs them: the fourth-next element's own entries; the
   // third-next's cell heads and its meeting partner's entries (its event, fetched one event
   // earlier, names the partner); the second-next crossing's new neighbours (their heads are
-  // the ones fetched one event earlier). The queue only guesses the order; a wrong guess
-  // costs the fetches. One event further ahead measured the same, one event less 4% slower at
-  // N = 10^6; the partner's cell heads as well, or the partner's entries one stage earlier (a
-  // wait for the event), slower. The last stage for every event's 27 cells was 13% slower at
-  // 10^5 (27 head loads, which wait when the heads have not arrived); for the 9 new cells of
-  // crossings only, +2.5% at 10^5 and +7.3% at 10^6, and a meeting's 27 as well, even
+  // the ones fetched one event earlier), or the second-next meeting's partner's cell heads
+  // (Collide then fetches its neighbours while the actor predicts). The queue only guesses
+  // the order; a wrong guess costs the fetches. One event further ahead measured the same,
+  // one event less 4% slower at N = 10^6; the partner's entries one stage earlier (a wait for
+  // the event), slower. The last stage for every event's 27 cells was 13% slower at 10^5 (27
+  // head loads, which wait when the heads have not arrived); for the 9 new cells of crossings
+  // only, +2.5% at 10^5 and +7.3% at 10^6; a meeting's actor's 27 as well, even
   // (docs/benchmarks.md, twenty-first measurement).
   std::uint32_t next[4];
   const int count = queue_.Upcoming(next, 4);
@@ -101,6 +102,8 @@ void World::Impl::FetchAhead() const {
       const int axis = event.aux / 2, direction = 2 * (event.aux & 1) - 1;
       grid_->FetchNewFirsts(grid_->CellAcross(grid_->CellOf(next[1]), axis, direction), axis,
                             direction);
+    } else if (event.kind == EventKind::kSphereMeet) {
+      grid_->FetchAround(grid_->CellOf(event.target));
     }
   }
 }
@@ -224,6 +227,8 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
       !(pending.kind == EventKind::kSphereMeet && pending.target == i)) {
     ++stats_.stale_actor_absent;
   }
+  // j's neighbours, fetched while i predicts (FetchAhead fetched their heads an event ago).
+  if (fetch_ahead_) grid_->FetchAroundFirsts(grid_->CellOf(j));
   PredictFull(i);
   PredictFull(j);
   PredictEngagementsOf(i);
