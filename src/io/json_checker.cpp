@@ -77,8 +77,11 @@ std::optional<double> Checker::NumberIn(const json& value, const std::string& pa
   const std::optional<double> v = Number(value, path);
   if (!v) return v;
   if (*v < lo || *v > hi || (lo_open && *v == lo)) {
-    const std::string range = (lo_open ? "(" : "[") + FormatNumber(lo) + ", " +
-                              (std::isinf(hi) ? std::string("inf)") : FormatNumber(hi) + "]");
+    // Appended piece by piece: `"(" + std::string` trips GCC 12's false -Wrestrict at -O3.
+    std::string range = lo_open ? "(" : "[";
+    range += FormatNumber(lo);
+    range += ", ";
+    range += std::isinf(hi) ? std::string("inf)") : FormatNumber(hi) + "]";
     Fail(path, "must be in " + range + ", got " + FormatNumber(*v));
     return std::nullopt;
   }

@@ -127,7 +127,7 @@ std::string FormatObjText(const PolygonMesh& mesh) {
   }
   for (const std::vector<std::int32_t>& face : mesh.faces) {
     out += "f";
-    for (const std::int32_t index : face) out += " " + std::to_string(index + 1);
+    for (const std::int32_t index : face) (out += ' ') += std::to_string(index + 1);
     out += "\n";
   }
   return out;

@@ -207,7 +207,7 @@ std::string FormatCounted(const PolygonMesh& mesh, bool ohio) {
   const std::int32_t base = ohio ? 1 : 0;
   for (const std::vector<std::int32_t>& face : mesh.faces) {
     out += std::to_string(face.size());
-    for (const std::int32_t index : face) out += " " + std::to_string(index + base);
+    for (const std::int32_t index : face) (out += ' ') += std::to_string(index + base);
     out += "\n";
   }
   return out;

@@ -465,7 +465,7 @@ std::string FormatPlyData(const PolygonMesh& mesh, bool binary) {
       for (const std::int32_t index : face) AppendLe(out, static_cast<std::uint32_t>(index));
     } else {
       out += std::to_string(face.size());
-      for (const std::int32_t index : face) out += " " + std::to_string(index);
+      for (const std::int32_t index : face) (out += ' ') += std::to_string(index);
       out += "\n";
     }
   }
