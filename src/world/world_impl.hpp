@@ -142,6 +142,9 @@ class World::Impl {
     EventKind kind = EventKind::kNone;
     std::uint8_t aux = 0;  // kWallMeet: the wall; kCellCrossing: axis * 2 + (1 if upwards)
     std::uint32_t version = 0;  // the element's own path changes so far (in the padding)
+    // A kCellCrossing's face, from `aux`: the axis, and +1 or -1 (arithmetic: no branch).
+    int CrossingAxis() const { return aux / 2; }
+    int CrossingDirection() const { return 2 * (aux & 1) - 1; }
   };
   static_assert(sizeof(Prediction) == 24);
   BigVector<Prediction> prediction_;

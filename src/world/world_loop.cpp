@@ -67,7 +67,7 @@ std::uint32_t World::Impl::CellAhead(std::uint32_t e) const {
   const Prediction& event = prediction_[e];
   const std::uint32_t cell = grid_->CellOf(e);
   if (event.kind != EventKind::kCellCrossing) return cell;
-  return grid_->CellAcross(cell, event.aux / 2, 2 * (event.aux & 1) - 1);
+  return grid_->CellAcross(cell, event.CrossingAxis(), event.CrossingDirection());
 }
 
 void World::Impl::FetchAhead() const {
@@ -99,9 +99,7 @@ void World::Impl::FetchAhead() const {
   if (count >= 2) {
     const Prediction& event = prediction_[next[1]];
     if (event.kind == EventKind::kCellCrossing) {
-      const int axis = event.aux / 2, direction = 2 * (event.aux & 1) - 1;
-      grid_->FetchNewFirsts(grid_->CellAcross(grid_->CellOf(next[1]), axis, direction), axis,
-                            direction);
+      grid_->FetchNewFirsts(CellAhead(next[1]), event.CrossingAxis(), event.CrossingDirection());
     } else if (event.kind == EventKind::kSphereMeet) {
       grid_->FetchAround(grid_->CellOf(event.target));
     }
@@ -133,8 +131,8 @@ void World::Impl::Dispatch(const QueueTop& top, bool engagement) {
 
 void World::Impl::HandleCellCrossing(std::uint32_t i) {
   const Prediction event = prediction_[i];
-  const int axis = event.aux / 2;
-  const int direction = 2 * (event.aux & 1) - 1;  // +1 or -1 (arithmetic: no branch)
+  const int axis = event.CrossingAxis();
+  const int direction = event.CrossingDirection();
   // A periodic wrap shifts the position: the same motion, seen in the box.
   if (!grid_) {
     starts_[i].p0 += all_pairs_->Move(i, axis, direction);
