@@ -227,7 +227,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   if (has_envelopes_) envelope_.push_back(def.envelope);
   public_of_.push_back(static_cast<std::uint32_t>(index));
   internal_of_.push_back(static_cast<std::uint32_t>(index));
-  prediction_.emplace_back();
+  queue_.Resize(index + 1);  // the element's slot and prediction
   const bool larger = radius > max_radius_;
   max_radius_ = std::max(max_radius_, radius);
   if (started_) {
@@ -254,7 +254,7 @@ void World::Impl::Start() {
   grid_.reset();
   all_pairs_.reset();
   queue_.Clear();
-  queue_.Reserve(n);  // one slot per element
+  queue_.ShrinkToFit();  // one slot per element, grown one by one by AddBody
   engagement_queue_.Clear();
   engagements_.Clear();
 
@@ -317,7 +317,7 @@ BodyState World::Impl::StateAt(std::uint32_t i, double t) const {
   const Path& path = PathOf(i);
   BodyState state{
       WrapIntoBox(path.PositionAt(t)), path.VelocityAt(t), path.a, Radius(i), 1.0 / InvMass(i),
-      prediction_[i].version};
+      PredictionOf(i).version};
   if (polyhedra_) {
     state.orientation = RigidPathOf(i).OrientationAt(t).normalized();
     state.angular_velocity = omega_[i];
@@ -410,7 +410,7 @@ std::size_t World::Impl::MemoryBytes() const {
       material_index_.size() * (sizeof(std::array<double, 4>) + 40) +
       material_.capacity() * sizeof(std::uint32_t) + envelope_.capacity() * sizeof(Envelope) +
       (public_of_.capacity() + internal_of_.capacity()) * sizeof(std::uint32_t) +
-      prediction_.capacity() * sizeof(Prediction) + queue_.MemoryBytes() +
+      queue_.MemoryBytes() +
       engagement_queue_.MemoryBytes() + gathered_.capacity() * sizeof(std::uint32_t);
   bytes += shape_.capacity() * sizeof(std::uint32_t) + q0_.capacity() * sizeof(Eigen::Quaterniond) +
            omega_.capacity() * sizeof(Vec3) + spin_radius_.capacity() * sizeof(double);

@@ -137,7 +137,8 @@ class World::Impl {
   // Each element's one outstanding prediction (§4): the kind of its queued event (the queue
   // holds the time) and the meeting its last prediction found, which a crossing keeps and a
   // kSphereMeet event is with; and the element's version (§4.2), which its events bump and its
-  // partners' predictions copy. One 24-byte record, as every event reads them all.
+  // partners' predictions copy. One 24-byte record, as every event reads them all; it lives in
+  // the element's queue entry (its payload), so that the two are one cache line.
   struct Prediction : Candidate {
     EventKind kind = EventKind::kNone;
     std::uint8_t aux = 0;  // kWallMeet: the wall; kCellCrossing: axis * 2 + (1 if upwards)
@@ -147,7 +148,8 @@ class World::Impl {
     int CrossingDirection() const { return 2 * (aux & 1) - 1; }
   };
   static_assert(sizeof(Prediction) == 24);
-  BigVector<Prediction> prediction_;
+  Prediction& PredictionOf(std::uint32_t e) { return queue_.PayloadOf(e); }
+  const Prediction& PredictionOf(std::uint32_t e) const { return queue_.PayloadOf(e); }
   // Internal indices follow space (Reorder); the public BodyId index is the order of AddBody.
   std::vector<std::uint32_t> public_of_;    // internal index -> public index
   std::vector<std::uint32_t> internal_of_;  // public index -> internal index
@@ -167,7 +169,7 @@ class World::Impl {
   std::optional<Grid> grid_;
   std::optional<AllPairs> all_pairs_;
   BigVector<std::uint32_t> gathered_;  // the Grid gathers' work list, then TestGathered's hits
-  CalendarQueue queue_;             // one slot per element
+  BasicCalendarQueue<Prediction> queue_;  // one slot per element, with its prediction
   CalendarQueue engagement_queue_;  // one slot per engagement
   Engagements engagements_;
   OverlapIndex overlap_index_;  // bodies added before the start, for AddBody's overlap check

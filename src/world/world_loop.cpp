@@ -57,14 +57,12 @@ Status World::Impl::AdvanceTo(double t) {
 
 void World::Impl::FetchElement(std::uint32_t e) const {
   Prefetch(&starts_[e]);  // one line: the path start and the grid links
-  Prefetch(&prediction_[e]);
-  Prefetch(&prediction_[e].version);  // the record's end: 2 in 8 span two lines
-  queue_.Prefetch(e);
+  queue_.Prefetch(e);  // the queue entry with its prediction, both its lines
 }
 
 std::uint32_t World::Impl::CellAhead(std::uint32_t e) const {
   // The cell e's next event will scan around: the one it crosses into, or its own.
-  const Prediction& event = prediction_[e];
+  const Prediction& event = PredictionOf(e);
   const std::uint32_t cell = grid_->CellOf(e);
   if (event.kind != EventKind::kCellCrossing) return cell;
   return grid_->CellAcross(cell, event.CrossingAxis(), event.CrossingDirection());
@@ -87,17 +85,17 @@ void World::Impl::FetchAhead() const {
   const int count = queue_.Upcoming(next, 4);
   if (count >= 3) {
     grid_->FetchAround(CellAhead(next[2]));
-    const Prediction& event = prediction_[next[2]];
+    const Prediction& event = PredictionOf(next[2]);
     if (event.kind == EventKind::kSphereMeet) FetchElement(event.target);
     if (event.kind == EventKind::kCellCrossing) {
       // A crossing checks whether its kept meeting's target changed path.
       const std::uint32_t kept = event.target;
-      if (kept != kNoIndex) Prefetch(&prediction_[kept].version);
+      if (kept != kNoIndex) Prefetch(&PredictionOf(kept).version);
     }
   }
   if (count >= 4) FetchElement(next[3]);
   if (count >= 2) {
-    const Prediction& event = prediction_[next[1]];
+    const Prediction& event = PredictionOf(next[1]);
     if (event.kind == EventKind::kCellCrossing) {
       grid_->FetchNewFirsts(CellAhead(next[1]), event.CrossingAxis(), event.CrossingDirection());
     } else if (event.kind == EventKind::kSphereMeet) {
@@ -130,7 +128,7 @@ void World::Impl::Dispatch(const QueueTop& top, bool engagement) {
 }
 
 void World::Impl::HandleCellCrossing(std::uint32_t i) {
-  const Prediction event = prediction_[i];
+  const Prediction event = PredictionOf(i);
   const int axis = event.CrossingAxis();
   const int direction = event.CrossingDirection();
   // A periodic wrap shifts the position: the same motion, seen in the box.
@@ -157,9 +155,9 @@ bool World::Impl::TouchingAndApproaching(std::uint32_t i, std::uint32_t j, Vec3&
 }
 
 void World::Impl::HandleSphereMeet(std::uint32_t i) {
-  const Prediction event = prediction_[i];
+  const Prediction event = PredictionOf(i);
   const std::uint32_t j = event.target;
-  if (prediction_[j].version != event.target_version) {
+  if (PredictionOf(j).version != event.target_version) {
     // Target-absent (§4.2): the target changed path since; the actor looks again.
     ++stats_.stale_target_absent;
     PredictFull(i);
@@ -195,9 +193,9 @@ void World::Impl::NotePenetration(double gap) {
 void World::Impl::SetVelocity(std::uint32_t i, const Vec3& v) {
   const Path path = PathOf(i);
   SetStart(i, PathStart{path.PositionAt(now_), v, now_});
-  ++prediction_[i].version;
+  ++PredictionOf(i).version;
   if (on_segment_) {
-    on_segment_(MotionSegment{now_, PublicId(i), starts_[i].p0, v, path.a, prediction_[i].version});
+    on_segment_(MotionSegment{now_, PublicId(i), starts_[i].p0, v, path.a, PredictionOf(i).version});
   }
 }
 
@@ -220,7 +218,7 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
                                  normal, result.impulse});
   }
   // j's own prediction is superseded: the actor-absent event of §4.2, removed in place.
-  const Prediction& pending = prediction_[j];
+  const Prediction& pending = PredictionOf(j);
   if (pending.kind != EventKind::kNone &&
       !(pending.kind == EventKind::kSphereMeet && pending.target == i)) {
     ++stats_.stale_actor_absent;
@@ -238,7 +236,7 @@ void World::Impl::HandleWallMeet(std::uint32_t i) {
     HandlePolyhedronWall(i);
     return;
   }
-  const Prediction event = prediction_[i];
+  const Prediction event = PredictionOf(i);
   const WallPlane plane = BoxWall(settings_.container, event.aux);
   const Vec3 p = PathOf(i).PositionAt(now_);
   const Vec3 v = PathOf(i).VelocityAt(now_);

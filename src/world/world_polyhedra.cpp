@@ -227,10 +227,10 @@ void World::Impl::SetMotion(std::uint32_t i, const Vec3& v, const Vec3& omega) {
   omega_[i] = omega;
   spin_radius_[i] = SpinRadiusOf(i);
   SetStart(i, PathStart{path.centre.PositionAt(now_), v, now_});
-  ++prediction_[i].version;
+  ++PredictionOf(i).version;
   if (on_segment_) {
     MotionSegment segment{
-        now_, PublicId(i), starts_[i].p0, v, path.centre.a, prediction_[i].version};
+        now_, PublicId(i), starts_[i].p0, v, path.centre.a, PredictionOf(i).version};
     segment.orientation = q0_[i];
     segment.angular_velocity = omega;
     on_segment_(segment);
@@ -272,7 +272,7 @@ bool World::Impl::CollidePolyhedra(std::uint32_t a, std::uint32_t b,
   }
   // Both bodies' element predictions are superseded (actor-absent, §4.2), replaced in place.
   for (const std::uint32_t body : {a, b}) {
-    if (prediction_[body].kind != EventKind::kNone) ++stats_.stale_actor_absent;
+    if (PredictionOf(body).kind != EventKind::kNone) ++stats_.stale_actor_absent;
   }
   PredictFull(a);
   PredictFull(b);
@@ -350,7 +350,7 @@ Event World::Impl::PredictPolyhedronWalls(std::uint32_t i, Event event) {
 }
 
 void World::Impl::HandlePolyhedronWall(std::uint32_t i) {
-  const int w = prediction_[i].aux;
+  const int w = PredictionOf(i).aux;
   const WallPlane plane = BoxWall(settings_.container, w);
   const RigidPath path = RigidPathOf(i);
   const Pose pose = path.PoseAt(now_);

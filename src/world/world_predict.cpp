@@ -33,7 +33,7 @@ void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& 
 void World::Impl::Offer(Candidate& best, double t, std::uint32_t j) const {
   // Ties go to the lower target index so that both broad phases choose the same event.
   if (t < best.time || (t == best.time && j < best.target)) {
-    best = Candidate{t, j, prediction_[j].version};
+    best = Candidate{t, j, PredictionOf(j).version};
   }
 }
 
@@ -161,7 +161,7 @@ double World::Impl::PredictWall(const Mover& mi, std::uint8_t& wall) const {
 }
 
 Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
-  static_cast<Candidate&>(prediction_[i]) = best;  // the kind is set by Schedule
+  static_cast<Candidate&>(PredictionOf(i)) = best;  // the kind is set by Schedule
   Event event;
   event.time = best.time;
   event.kind = best.time == kInfinity ? EventKind::kNone : EventKind::kSphereMeet;
@@ -214,7 +214,7 @@ Event World::Impl::FinishLinearPrediction(std::uint32_t i, const Candidate& best
   // FinishPrediction for straight lines in a periodic or open box (the gas): the earlier of the
   // crossing and the meeting, with selects instead of branches (which of the two comes first
   // is a coin toss after every event of a gas).
-  static_cast<Candidate&>(prediction_[i]) = best;  // the kind is set by Schedule
+  static_cast<Candidate&>(PredictionOf(i)) = best;  // the kind is set by Schedule
   const double crossing_time = next.time;
   const int axis = next.axis, direction = next.direction;
   const bool crossing = crossing_time < best.time;
@@ -236,8 +236,8 @@ Event World::Impl::FinishLinearPrediction(std::uint32_t i, const Candidate& best
 
 void World::Impl::Schedule(std::uint32_t i, const Event& event) {
   const PhaseTimer timer(settings_.profile_phases, stats_.seconds_queue);
-  prediction_[i].kind = event.kind;
-  prediction_[i].aux = event.aux;
+  PredictionOf(i).kind = event.kind;
+  PredictionOf(i).aux = event.aux;
   if (event.kind == EventKind::kNone) {
     queue_.Erase(i);
   } else {
@@ -302,9 +302,9 @@ void World::Impl::PredictAfterCrossing(std::uint32_t i, const Grid::Place& place
   // The meeting found by the last full prediction still bounds every old neighbour's meeting
   // as long as its target has not changed path; then only the 9 new cells need a look
   // (docs/sparse-phase.md#cell-crossings). Otherwise predict in full.
-  const Candidate& kept = prediction_[i];
+  const Candidate& kept = PredictionOf(i);
   const bool kept_valid =
-      kept.time == kInfinity || prediction_[kept.target].version == kept.target_version;
+      kept.time == kInfinity || PredictionOf(kept.target).version == kept.target_version;
   if (!kept_valid) {
     PredictFull(i);
     return;

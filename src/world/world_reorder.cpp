@@ -55,11 +55,15 @@ void World::Impl::Reorder() {
   std::vector<std::uint32_t> new_of_old(n);
   for (std::uint32_t e = 0; e < n; ++e) new_of_old[old_of_new[e]] = e;
 
-  std::vector<double> time(n, kInfinity);  // the queue holds the event times
+  // The queue holds the event times and the predictions.
+  std::vector<double> time(n, kInfinity);
+  std::vector<Prediction> prediction(n);
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (prediction_[i].kind != EventKind::kNone) time[i] = queue_.TimeOf(i);
+    prediction[i] = PredictionOf(i);
+    if (prediction[i].kind != EventKind::kNone) time[i] = queue_.TimeOf(i);
   }
   PermuteVector(time, old_of_new);
+  PermuteVector(prediction, old_of_new);
   PermuteVector(starts_, old_of_new);
   if (own_accelerations_) PermuteVector(acceleration_, old_of_new);
   PermuteVector(material_, old_of_new);
@@ -69,11 +73,10 @@ void World::Impl::Reorder() {
     PermuteVector(omega_, old_of_new);
     PermuteVector(spin_radius_, old_of_new);
   }
-  PermuteVector(prediction_, old_of_new);
   PermuteVector(public_of_, old_of_new);
   for (std::uint32_t e = 0; e < n; ++e) {
     internal_of_[public_of_[e]] = e;
-    std::uint32_t& target = prediction_[e].target;
+    std::uint32_t& target = prediction[e].target;
     if (target != kNoIndex) target = new_of_old[target];
   }
   ShareGridLinks();  // the records moved, their links with them
@@ -83,7 +86,8 @@ void World::Impl::Reorder() {
   // which is itself a deterministic function of the run).
   queue_.Clear();
   for (std::uint32_t e = 0; e < n; ++e) {
-    if (prediction_[e].kind != EventKind::kNone) queue_.Set(e, time[e], prediction_[e].kind);
+    PredictionOf(e) = prediction[e];
+    if (prediction[e].kind != EventKind::kNone) queue_.Set(e, time[e], prediction[e].kind);
   }
 }
 

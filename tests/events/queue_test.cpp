@@ -11,10 +11,19 @@
 #include <vector>
 
 #include "events/calendar_queue.hpp"
+#include "events/calendar_queue_impl.hpp"
 #include "events/heap_queue.hpp"
 #include "events/reference_queue.hpp"
 
 namespace sparsedyn {
+
+// A payload as the world's: a record per slot that the queue keeps but never reads.
+struct TestPayload {
+  std::uint64_t stamp = 0;
+  std::uint32_t owner = 0;
+};
+template class BasicCalendarQueue<TestPayload>;
+
 namespace {
 
 constexpr double kHuge = 1e300;
@@ -498,6 +507,70 @@ TEST(CalendarQueue, UpcomingGuessesTheNextHeads) {
   single.Set(5, 1.0, EventKind::kCellCrossing);
   std::uint32_t none[2];
   EXPECT_EQ(single.Upcoming(none, 2), 0);
+}
+
+// A queue with payloads orders exactly as the plain one on the same stream (sets, moves,
+// erases, pops, with the rebuilds and year ends they cause), and every payload stays with its
+// slot through all of it, through Clear, and through Resize, which adds value-initialised ones.
+TEST(CalendarQueue, PayloadsStayWithTheirSlots) {
+  BasicCalendarQueue<TestPayload> carrying;
+  CalendarQueue plain;
+  constexpr std::uint32_t kSlots = 3000;
+  carrying.Resize(kSlots);
+  ASSERT_EQ(carrying.Slots(), kSlots);
+  for (std::uint32_t slot = 0; slot < kSlots; ++slot) {
+    EXPECT_EQ(carrying.PayloadOf(slot).stamp, 0u);
+    EXPECT_FALSE(carrying.Contains(slot));
+    carrying.PayloadOf(slot) = TestPayload{0, slot};
+  }
+  std::mt19937_64 rng(1618);
+  std::uniform_int_distribution<std::uint32_t> pick(0, kSlots - 1);
+  std::exponential_distribution<double> gap(1.0);
+  std::vector<std::uint64_t> stamp(kSlots, 0);
+  double now = 0.0;
+  for (std::uint64_t op = 1; op <= 200000; ++op) {
+    const std::uint32_t slot = pick(rng);
+    const std::uint64_t kind = op % 7;
+    if (kind == 0) {
+      carrying.Erase(slot);
+      plain.Erase(slot);
+    } else if (kind == 1 && !plain.Empty()) {
+      const QueueTop top = plain.Top();
+      const QueueTop same = carrying.Top();
+      ASSERT_EQ(same.slot, top.slot) << "op " << op;
+      ASSERT_EQ(same.time, top.time) << "op " << op;
+      now = top.time;
+      carrying.Pop();
+      plain.Pop();
+    } else {
+      // Mostly near the head, now and then far beyond the year.
+      const double t = now + gap(rng) * (kind == 2 ? 1e6 : 50.0);
+      carrying.Set(slot, t, EventKind::kCellCrossing);
+      plain.Set(slot, t, EventKind::kCellCrossing);
+    }
+    stamp[slot] = op;
+    carrying.PayloadOf(slot).stamp = op;
+    ASSERT_EQ(carrying.Size(), plain.Size());
+  }
+  EXPECT_GT(carrying.RebuildCount(), 0u);
+  carrying.Clear();
+  EXPECT_TRUE(carrying.Empty());
+  ASSERT_EQ(carrying.Slots(), kSlots);
+  for (std::uint32_t slot = 0; slot < kSlots; ++slot) {
+    EXPECT_FALSE(carrying.Contains(slot));
+    EXPECT_EQ(carrying.PayloadOf(slot).owner, slot);
+    EXPECT_EQ(carrying.PayloadOf(slot).stamp, stamp[slot]);
+  }
+  carrying.Resize(kSlots + 2);
+  EXPECT_EQ(carrying.PayloadOf(kSlots + 1).stamp, 0u);
+  EXPECT_EQ(carrying.PayloadOf(kSlots - 1).owner, kSlots - 1);
+  carrying.ShrinkToFit();
+  EXPECT_EQ(carrying.Slots(), kSlots + 2);
+  // A cleared queue works as a new one.
+  carrying.Set(7, 2.0, EventKind::kSphereMeet);
+  carrying.Set(3, 1.0, EventKind::kSphereMeet);
+  EXPECT_EQ(carrying.Top().slot, 3u);
+  EXPECT_EQ(carrying.PayloadOf(3).owner, 3u);
 }
 
 }  // namespace
