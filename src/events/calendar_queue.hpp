@@ -124,10 +124,6 @@ class BasicCalendarQueue {
   /// payloads stay.
   void Clear();
 
-  /// Room for slots 0 .. slots - 1 without regrowing: Set() grows the slot array one slot at a
-  /// time, which leaves up to twice the memory needed when the number of slots is known.
-  void Reserve(std::size_t slots) { entries_.reserve(slots); }
-
   /// Makes slots 0 .. slots - 1 exist (without entries; new payloads value-initialised), or
   /// drops the slots from `slots` on, which must have no entries.
   void Resize(std::size_t slots) {

@@ -138,7 +138,7 @@ class World::Impl {
   // holds the time) and the meeting its last prediction found, which a crossing keeps and a
   // kSphereMeet event is with; and the element's version (§4.2), which its events bump and its
   // partners' predictions copy. One 24-byte record, as every event reads them all; it lives in
-  // the element's queue entry (its payload), so that the two are one cache line.
+  // the element's queue entry (its payload), so that the lines the queue's walks fetch hold it.
   struct Prediction : Candidate {
     EventKind kind = EventKind::kNone;
     std::uint8_t aux = 0;  // kWallMeet: the wall; kCellCrossing: axis * 2 + (1 if upwards)

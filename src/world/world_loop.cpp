@@ -195,7 +195,8 @@ void World::Impl::SetVelocity(std::uint32_t i, const Vec3& v) {
   SetStart(i, PathStart{path.PositionAt(now_), v, now_});
   ++PredictionOf(i).version;
   if (on_segment_) {
-    on_segment_(MotionSegment{now_, PublicId(i), starts_[i].p0, v, path.a, PredictionOf(i).version});
+    on_segment_(
+        MotionSegment{now_, PublicId(i), starts_[i].p0, v, path.a, PredictionOf(i).version});
   }
 }
 
