@@ -124,9 +124,10 @@ class BasicCalendarQueue {
   /// payloads stay.
   void Clear();
 
-  /// Makes slots 0 .. slots - 1 exist (without entries; new payloads value-initialised), or
-  /// drops the slots from `slots` on, which must have no entries.
+  /// Makes slots 0 .. slots - 1 exist (without entries; new payloads value-initialised). Grows
+  /// only: a slot's entry may be linked into a list.
   void Resize(std::size_t slots) {
+    SPARSEDYN_ASSERT(slots >= entries_.size(), "CalendarQueue::Resize: slots only grow");
     entries_.resize(slots, Entry{0.0, kNoIndex, kNoIndex, kAbsent, EventKind::kNone, Payload{}});
     prefetch_ = entries_.size() * sizeof(Entry) >= kPrefetchBytes;
   }
