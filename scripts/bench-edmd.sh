@@ -2,39 +2,47 @@
 # SPDX-License-Identifier: MIT
 # The gas against Smallenburg's EDMD on this machine (docs/benchmarks.md "EDMD on this machine"):
 # EDMD's cell-list variant (Cell/mdCell.c, the faster of its codes at packing 0.05) and
-# gas_bench's BM_Gas, alternated, each pinned to one core, on the same initial positions
-# (gas_sph), both after 2 collisions per particle to settle (gas_bench's stretches are 20, 10
-# or 4 collisions per particle; EDMD's 100, 20 and 4, as its CPU time is the difference of two
-# runs, which needs a second or more). Prints each run and the medians in collisions per CPU s.
+# gas_bench's BM_Gas on the same initial positions (gas_sph), both settled for 2 collisions per
+# particle, then timed taking turns on one core: gas_bench runs its stretch in slices
+# (SPARSEDYN_GAS_TURNS, as in scripts/bench-ab.sh) and between two of its slices this script
+# lets EDMD run for a like time (SIGCONT, then SIGSTOP), so that the machine's swings, which
+# last seconds here, fall on both alike. EDMD prints its collision count at every write
+# interval (a small fraction of the stretch); each printed line is stamped with EDMD's CPU time
+# (/proc/PID/schedstat), and its rate is that of the lines printed while the turns ran.
+# Prints each round's collisions per CPU s, the ratio, and the medians.
 #   scripts/bench-edmd.sh EDMD_DIR [--rounds R] [--sizes "10000 100000 1000000"] [--core C]
+#                                  [--slices K]
 # EDMD is not part of this project: EDMD_DIR is a checkout of
 # https://github.com/FSmallenburg/EDMD (MIT licence; the measurements in docs/ used commit
 # 65a9972). Only its documented parameters are set, with sed, in a copy: the globals at the top
 # of mdCell.c (maxtime, writeinterval, eventlisttimemultiplier) and MAXCEL, then it is built
-# with its Makefile's flags (-Ofast -funroll-loops -march=native). Its CPU time over the stretch
-# is the difference between a run to the end and a run to the settling time (EDMD prints its
-# collision count at every write interval, set to the settling time).
+# with its Makefile's flags (-Ofast -funroll-loops -march=native). Its writes sum the kinetic
+# energy over all particles: about 30 of them in a stretch, under 0.2% of its time at 10^6.
 # Environment: JOBS (build parallelism, default 2).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-usage="usage: $0 EDMD_DIR [--rounds R] [--sizes \"N ...\"] [--core C]"
+usage="usage: $0 EDMD_DIR [--rounds R] [--sizes \"N ...\"] [--core C] [--slices K]"
 (($# >= 1)) || { echo "$usage" >&2; exit 2; }
 edmd=$(cd "$1" 2>/dev/null && pwd) || { echo "$0: no directory $1" >&2; exit 2; }
 shift
 rounds=5
 sizes="10000 100000 1000000"
 core=1
+slices=30
 while (($# > 0)); do
+  (($# >= 2)) || { echo "$usage" >&2; exit 2; }
   case "$1" in
-    --rounds) rounds=$2; shift ;;
-    --sizes) sizes=$2; shift ;;
-    --core) core=$2; shift ;;
+    --rounds) rounds=$2 ;;
+    --sizes) sizes=$2 ;;
+    --core) core=$2 ;;
+    --slices) slices=$2 ;;
     *) echo "$usage" >&2; exit 2 ;;
   esac
-  shift
+  shift 2
 done
 [[ $rounds =~ ^[1-9][0-9]*$ ]] || { echo "$0: --rounds must be a positive number, not '$rounds'" >&2; exit 2; }
 [[ $core =~ ^[0-9]+$ ]] || { echo "$0: --core must be a core number, not '$core'" >&2; exit 2; }
+[[ $slices =~ ^[1-9][0-9]*$ ]] || { echo "$0: --slices must be a positive number, not '$slices'" >&2; exit 2; }
 source="$edmd/Cell/mdCell.c"
 [[ -f $source ]] || { echo "$0: $source not found (not an EDMD checkout?)" >&2; exit 2; }
 for n in $sizes; do
@@ -44,23 +52,32 @@ for n in $sizes; do
   fi
 done
 command -v gcc >/dev/null || { echo "$0: gcc is needed to build EDMD" >&2; exit 1; }
+command -v stdbuf >/dev/null || { echo "$0: stdbuf (coreutils) is needed" >&2; exit 1; }
+[[ -r /proc/self/schedstat ]] || { echo "$0: /proc/PID/schedstat is needed (Linux)" >&2; exit 1; }
+# The script's own work (stamping EDMD's lines, passing the turns) runs on another core.
+other=$((core == 0 ? 1 : 0))
 
 "$root/scripts/deps.sh"
 cmake -S "$root" --preset bench >/dev/null
 build="$root/build/bench"
 cmake --build "$build" --target gas_bench gas_sph -j"${JOBS:-2}" >/dev/null
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+pids=()
+cleanup() {
+  local pid
+  for pid in "${pids[@]}"; do kill -CONT "$pid" 2>/dev/null; kill "$pid" 2>/dev/null; done
+  rm -rf "$work"
+}
+trap cleanup EXIT
 
 packing=0.05
 # gas_bench's stretches: the Enskog collision frequency per particle (kT = m = sigma = 1).
 rate=$(awk -v p=$packing 'BEGIN { pi = atan2(0, -1); n = 6 * p / pi;
   g = (1 - p / 2) / (1 - p) ^ 3; printf "%.17g", 4 * n * g * sqrt(pi) }')
 
-# EDMD built for one N: settling ends at t_eq, the stretch at t_end = (1 + k / 2) t_eq, both
-# at a write (the write interval is t_eq); maxtime a little beyond so that the write happens.
-build_edmd() {  # n maxtime t_eq output
-  local n=$1 maxtime=$2 t_eq=$3 out=$4
+# EDMD built for one N, to run until maxtime, writing every write_interval.
+build_edmd() {  # n maxtime write_interval output
+  local n=$1 maxtime=$2 write=$3 out=$4
   # Its cell rule: about 1 sigma, fewer while more than 8 cells per sphere, capped at MAXCEL
   # per axis (75). The cap made cells 2.9 sigma at 10^6 (40k collisions/s against 153k
   # without): raised whenever the capped cells would exceed 1.5 sigma.
@@ -72,11 +89,11 @@ build_edmd() {  # n maxtime t_eq output
   # The event list time (its multiplier: 5 the best of 1-20 below 10^6, 1 at 10^6).
   list=$((n >= 1000000 ? 1 : 5))
   sed -e "s/^double maxtime = [^;]*;/double maxtime = $maxtime;/" \
-    -e "s/^double writeinterval = [^;]*;/double writeinterval = $t_eq;/" \
+    -e "s/^double writeinterval = [^;]*;/double writeinterval = $write;/" \
     -e "s/^double eventlisttimemultiplier = [^;]*;/double eventlisttimemultiplier = $list;/" \
     -e "s/^#define MAXCEL .*/#define MAXCEL $maxcel/" "$source" >"$work/mdCell.c"
   local parameter
-  for parameter in "double maxtime = $maxtime;" "double writeinterval = $t_eq;" \
+  for parameter in "double maxtime = $maxtime;" "double writeinterval = $write;" \
     "double eventlisttimemultiplier = $list;" "#define MAXCEL $maxcel"; do
     grep -qF "$parameter" "$work/mdCell.c" ||
       { echo "$0: could not set '$parameter' in $source (changed upstream?)" >&2; exit 1; }
@@ -85,54 +102,124 @@ build_edmd() {  # n maxtime t_eq output
     "$work/mdCell.c" -o "$out" -lm
 }
 
-# One EDMD run: prints "CPU_SECONDS COLLISIONS" (the collision count at its last write).
-run_edmd() {  # binary directory
-  local cpu
-  cpu=$( { TIMEFORMAT='%3U %3S'; time taskset -c "$core" "$1" >"$2/out.txt"; } 2>&1)
-  local collisions
-  collisions=$(sed -n 's/.*Collisions: \([0-9]*\),.*/\1/p' "$2/out.txt" | tail -n 1)
-  [[ -n $collisions ]] || { echo "$0: EDMD printed no collision count:" >&2; cat "$2/out.txt" >&2; exit 1; }
-  awk -v t="$cpu" -v c="$collisions" 'BEGIN { split(t, a, " "); print a[1] + a[2], c }'
+# Copies EDMD's output lines, each prefixed with the wall clock and EDMD's CPU time in ns.
+stamp_lines() {  # pid
+  local line cpu
+  while IFS= read -r line; do
+    read -r cpu _ <"/proc/$1/schedstat" 2>/dev/null || cpu=0
+    printf '%s %s %s\n' "$EPOCHREALTIME" "$cpu" "$line"
+  done
 }
 
-run_ours() {  # n -> collisions per CPU second
-  taskset -c "$core" "$build/bench/gas_bench" --benchmark_counters_tabular=true \
-    --benchmark_filter="^BM_Gas/n:$1/packing%:5/allpairs0_grid1:1/" 2>/dev/null |
-    awk '$1 == "Benchmark" { for (i = 1; i <= NF; ++i) if ($i == "collisions/cpu_s") c = i + 2 }
-         /^BM_Gas/ && c { v = $c; m = 1; if (v ~ /k$/) m = 1e3; if (v ~ /M$/) m = 1e6;
-                          sub(/[kM]$/, "", v); printf "%.0f\n", v * m }'
+# EDMD's simulated time on its last stamped line (-1 before its first write).
+edmd_time() {  # log
+  [[ -e $1 ]] || { echo -1; return; }
+  sed -n 's/.*Simtime: \([0-9.]*\),.*/\1/p' "$1" | tail -n 1 | awk '{ v = $1 } END { print (NR ? v : -1) }'
 }
 
-median() { sort -n | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
-
-printf '%-8s %-6s %14s %14s\n' N round "EDMD coll/cpu_s" "ours coll/cpu_s"
-for n in $sizes; do
-  k=$((n >= 1000000 ? 4 : (n >= 100000 ? 20 : 100)))
+# One round: EDMD and gas_bench set up and settle side by side; then gas_bench's slices and
+# EDMD's alternate (gas_bench first in odd rounds). Sets r_edmd and r_ours, collisions per CPU s.
+round() {  # n dir edmd_binary stretch slice_seconds ours_first
+  local n=$1 dir=$2 binary=$3 stretch=$4 slice=$5 ours_first=$6
+  local t_eq
   t_eq=$(awk -v r="$rate" 'BEGIN { printf "%.17g", 2 / r }')
-  t_end=$(awk -v t="$t_eq" -v k=$k 'BEGIN { printf "%.17g", t * (1 + k / 2) }')
+  rm -f "$work"/pipe_* "$work"/ready "$work"/edmd.log "$work"/ours.json
+  mkfifo "$work/pipe_ours" "$work/pipe_edmd" "$work/pipe_out"
+  (cd "$dir" && exec taskset -c "$core" stdbuf -oL "$binary" >"$work/pipe_out") &
+  local edmd_pid=$!
+  pids=("$edmd_pid")
+  taskset -c "$other" bash -c "$(declare -f stamp_lines); stamp_lines $edmd_pid" \
+    <"$work/pipe_out" >"$work/edmd.log" &
+  pids+=($!)
+  # EDMD settled: stopped until the turns start.
+  while (($(awk -v t="$(edmd_time "$work/edmd.log")" -v e="$t_eq" 'BEGIN { print (t < e) }'))); do
+    kill -0 "$edmd_pid" 2>/dev/null ||
+      { echo "$0: EDMD ended before settling:" >&2; cut -d' ' -f3- "$work/edmd.log" >&2; return 1; }
+    sleep 0.05
+  done
+  kill -STOP "$edmd_pid"
+  SPARSEDYN_GAS_STRETCH=$stretch SPARSEDYN_GAS_TURNS="$work/pipe_ours,$work/pipe_edmd,$work/ready,$slices" \
+    taskset -c "$core" "$build/bench/gas_bench" \
+    --benchmark_filter="^BM_Gas/n:$n/packing%:5/allpairs0_grid1:1/" --benchmark_format=json \
+    >"$work/ours.json" 2>/dev/null &
+  local ours_pid=$!
+  pids+=("$ours_pid")
+  while [[ ! -e $work/ready ]]; do
+    kill -0 "$ours_pid" 2>/dev/null || { echo "$0: gas_bench ended before its turns" >&2; return 1; }
+    sleep 0.05
+  done
+  exec 3<>"$work/pipe_edmd" 4<>"$work/pipe_ours"
+  local begin token
+  begin=$EPOCHREALTIME
+  if ((ours_first)); then printf t >&4; else printf t >&3; fi
+  # EDMD's turns, until gas_bench's last slice has passed the turn and it has ended.
+  while kill -0 "$ours_pid" 2>/dev/null; do
+    if read -r -n 1 -t 0.5 token <&3; then
+      kill -CONT "$edmd_pid" 2>/dev/null || true
+      sleep "$slice"
+      kill -STOP "$edmd_pid" 2>/dev/null || true
+      printf t >&4
+    fi
+  done
+  local end=$EPOCHREALTIME
+  exec 3>&- 4>&-
+  wait "$ours_pid" || true
+  # EDMD must have outlasted the turns (ended, it is a zombie until waited for).
+  local state
+  state=$(awk '{ print $3 }' "/proc/$edmd_pid/stat" 2>/dev/null || echo gone)
+  [[ $state != Z && $state != gone ]] ||
+    { echo "$0: EDMD ended during the turns (its maxtime is too short)" >&2; return 1; }
+  kill -CONT "$edmd_pid" 2>/dev/null || true
+  kill "$edmd_pid" 2>/dev/null || true
+  wait "${pids[@]}" 2>/dev/null || true
+  pids=()
+  r_ours=$(awk -F': ' '/"collisions\/cpu_s"/ { gsub(/[ ,]/, "", $2); print $2 }' "$work/ours.json")
+  [[ -n $r_ours ]] || { echo "$0: gas_bench reported no rate for N = $n" >&2; return 1; }
+  # EDMD's rate between its first and last lines stamped while the turns ran.
+  r_edmd=$(awk -v b="$begin" -v e="$end" '
+    $1 >= b && $1 <= e && match($0, /Collisions: [0-9]+/) {
+      c = substr($0, RSTART + 12, RLENGTH - 12) + 0
+      if (!seen) { c0 = c; t0 = $2; seen = 1 }
+      c1 = c; t1 = $2; lines++
+    }
+    END { if (lines < 3 || t1 <= t0) print ""; else printf "%.0f %d\n", (c1 - c0) / ((t1 - t0) * 1e-9), lines }' \
+    "$work/edmd.log")
+  read -r r_edmd edmd_lines <<<"$r_edmd"
+  [[ -n $r_edmd ]] || { echo "$0: EDMD wrote fewer than 3 lines during the turns (N = $n)" >&2; return 1; }
+}
+
+median() { sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
+
+echo "core $core, $slices turns each; collisions per CPU s"
+printf '%-8s %-6s %12s %12s %10s %6s\n' N round EDMD ours ours/EDMD lines
+for n in $sizes; do
+  # gas_bench's stretch: 2 x 10^6 collisions (at least 2 per particle), as in bench-ab.sh.
+  stretch=$(awk -v n="$n" 'BEGIN { s = 2e6 / n; print (s < 2 ? 2 : s) }')
+  # EDMD's turns last about as long as gas_bench's (measured roughly, ~2 us per collision
+  # pair here at 10^6, less below); it writes ~30 lines in the stretch and runs long enough
+  # never to end during the turns.
+  slice=$(awk -v n="$n" -v s="$stretch" -v k="$slices" 'BEGIN { c = n * s / 2 / k;
+    us = n >= 1000000 ? 2.5 : (n >= 100000 ? 1.8 : 1.0); printf "%.3f", c * us * 1e-6 }')
+  t_eq=$(awk -v r="$rate" 'BEGIN { printf "%.17g", 2 / r }')
+  write=$(awk -v r="$rate" -v s="$stretch" 'BEGIN { printf "%.17g", s / r / 30 / 1.5 }')
+  maxtime=$(awk -v r="$rate" -v s="$stretch" -v t="$t_eq" 'BEGIN { printf "%.17g", t + 4 * s / r }')
   dir="$work/$n"
   mkdir -p "$dir"
   "$build/bench/gas_sph" "$n" $packing >"$dir/init.sph"
-  build_edmd "$n" "$(awk -v t="$t_eq" 'BEGIN { printf "%.17g", t * 1.001 }')" "$t_eq" "$dir/md_settle"
-  build_edmd "$n" "$(awk -v t="$t_end" 'BEGIN { printf "%.17g", t * 1.001 }')" "$t_eq" "$dir/md_stretch"
+  build_edmd "$n" "$maxtime" "$write" "$dir/md"
+  ratios=()
   : >"$dir/edmd.txt"
   : >"$dir/ours.txt"
   for ((r = 1; r <= rounds; ++r)); do
-    # Assignments, not process substitutions: a failed run then stops the script (set -e).
-    settle=$(cd "$dir" && run_edmd ./md_settle "$dir")
-    stretch=$(cd "$dir" && run_edmd ./md_stretch "$dir")
-    read -r cpu0 coll0 <<<"$settle"
-    read -r cpu1 coll1 <<<"$stretch"
-    theirs=$(awk -v a="$cpu0" -v b="$cpu1" -v c="$coll0" -v d="$coll1" \
-      'BEGIN { if (b <= a) print "nan"; else printf "%.0f\n", (d - c) / (b - a) }')
-    ours=$(run_ours "$n")
-    [[ -n $ours ]] || { echo "$0: gas_bench printed no collisions/cpu_s for N = $n" >&2; exit 1; }
-    echo "$theirs" >>"$dir/edmd.txt"
-    echo "$ours" >>"$dir/ours.txt"
-    printf '%-8s %-6s %14s %14s\n' "$n" "$r" "$theirs" "$ours"
+    round "$n" "$dir" "$dir/md" "$stretch" "$slice" $((r % 2))
+    ratio=$(awk -v a="$r_edmd" -v b="$r_ours" 'BEGIN { printf "%.3f", b / a }')
+    ratios+=("$ratio")
+    echo "$r_edmd" >>"$dir/edmd.txt"
+    echo "$r_ours" >>"$dir/ours.txt"
+    printf '%-8s %-6s %12.0f %12.0f %10s %6s\n' "$n" "$r" "$r_edmd" "$r_ours" "$ratio" "$edmd_lines"
   done
-  a=$(median <"$dir/edmd.txt")
-  b=$(median <"$dir/ours.txt")
-  printf '%-8s %-6s %14s %14s  ours/EDMD %.2f\n' "$n" median "$a" "$b" \
-    "$(awk -v a="$a" -v b="$b" 'BEGIN { print (a > 0) ? b / a : 0 }')"
+  printf '%-8s %-6s %12.0f %12.0f %10s  (median of the rounds'"'"' ratios; range %s-%s)\n' "$n" median \
+    "$(median <"$dir/edmd.txt")" "$(median <"$dir/ours.txt")" \
+    "$(printf '%s\n' "${ratios[@]}" | median)" \
+    "$(printf '%s\n' "${ratios[@]}" | sort -g | head -n 1)" "$(printf '%s\n' "${ratios[@]}" | sort -g | tail -n 1)"
 done
