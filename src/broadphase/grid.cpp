@@ -61,10 +61,51 @@ Grid::Grid(const Config& config, std::uint32_t element_capacity)
       new_cells_[4 + side][a + 1] = direction * sz + a * sy - 1;
     }
   }
+  BuildOuterTables();
   head_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2], kNoIndex);
   cells_ = FastDivisor(static_cast<std::uint32_t>(head_.size()));
   own_links_.assign(element_capacity, GridLinks{});
   UseOwnLinks();
+}
+
+void Grid::BuildOuterTables() {
+  // Along axis k, a cell of kind 0 (first layer) finds its -1 neighbour on the last layer,
+  // whose image lies a box length below; kind 2 (last layer) its +1 neighbour on the first.
+  std::array<std::array<std::array<std::int32_t, 3>, 3>, 3> step{};  // [axis][kind][i]
+  for (int k = 0; k < 3; ++k) {
+    const auto stride = static_cast<std::int32_t>(stride_[k]);
+    for (int kind = 0; kind < 3; ++kind) {
+      for (int i = 0; i < 3; ++i) {
+        int d = i - 1;
+        double shift = 0.0;
+        if (kind == 0 && d < 0) {
+          d += n_[k];
+          shift = -length_[k];
+        } else if (kind == 2 && d > 0) {
+          d -= n_[k];
+          shift = length_[k];
+        }
+        step[k][kind][i] = d * stride;
+        wrap_shifts_[k][kind][i] = periodic_ ? shift : 0.0;
+      }
+    }
+  }
+  for (std::size_t kind = 0; kind < 27; ++kind) {
+    for (std::size_t r = 0; r < 27; ++r) {
+      wrap_offsets_[kind][r] =
+          step[0][kind % 3][r % 3] + step[1][kind / 3 % 3][r / 3 % 3] + step[2][kind / 9][r / 9];
+    }
+  }
+  // The 9 new cells across (axis, direction): the layer at i = direction + 1 along the axis.
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      std::size_t count = 0;
+      for (std::uint8_t r = 0; r < 27; ++r) {
+        const int i = axis == 0 ? r % 3 : (axis == 1 ? r / 3 % 3 : r / 9);
+        if (i == side * 2) new_positions_[static_cast<std::size_t>(axis * 2 + side)][count++] = r;
+      }
+    }
+  }
 }
 
 std::uint32_t Grid::CellAt(const Vec3& p) const {

@@ -226,6 +226,10 @@ class Grid {
   template <typename Fn>
   void ForEachGatheredAroundWrapped(const Place& place, BigVector<std::uint32_t>& pending,
                                     Fn&& fn) const {
+    if (periodic_) {
+      VisitGatheredOuter<27>(place, kAllPositions.data(), pending, fn);
+      return;
+    }
     const std::array<Span, 3> spans = AroundSpans(place);
     VisitGatheredBlock(spans[0], spans[1], spans[2], pending, fn);
   }
@@ -234,6 +238,11 @@ class Grid {
   template <typename Fn>
   void ForEachGatheredNewWrapped(const Place& place, int axis, int direction,
                                  BigVector<std::uint32_t>& pending, Fn&& fn) const {
+    if (periodic_) {
+      VisitGatheredOuter<9>(place, new_positions_[axis * 2 + (direction > 0 ? 1 : 0)].data(),
+                            pending, fn);
+      return;
+    }
     const std::array<Span, 3> spans = NewSpans(place, axis, direction);
     VisitGatheredBlock(spans[0], spans[1], spans[2], pending, fn);
   }
@@ -309,6 +318,7 @@ class Grid {
     return static_cast<std::uint32_t>((c[2] * n_[1] + c[1]) * n_[0] + c[0]);
   }
   std::uint32_t CellAt(const Vec3& p) const;
+  void BuildOuterTables();
   void Link(std::uint32_t e, std::uint32_t cell);  // pushes e onto the cell's list
 
   // The first element's record of each cell of `runs` runs of `run` consecutive cells from
@@ -443,6 +453,57 @@ class Grid {
       fn(j, Vec3(x.shift[at & 3], y.shift[(at >> 2) & 3], z.shift[at >> 4]));
     }
   }
+  // The outer layer of a periodic grid. A cell's kind along an axis is 0 on the grid's first
+  // layer, 2 on its last, 1 between; the 27 kinds of cell (13: interior) each have their 27
+  // neighbours at fixed index offsets with the wrap built in (wrap_offsets_), by position
+  // r = ix + 3 iy + 9 iz (i = 0, 1, 2 for -1, 0, +1 along each axis), and each axis's three
+  // image shifts by kind (wrap_shifts_). A gather then walks a fixed list of positions as
+  // an interior one does, instead of working out spans: at N = 10^4 the outer layer holds a
+  // seventh of the cells, and its gathers, through spans, cost twice an interior one.
+  static int KindAlong(int at, int n) { return (at != 0 ? 1 : 0) + (at == n - 1 ? 1 : 0); }
+  template <int kCount, typename Fn>
+  void VisitGatheredOuter(const Place& place, const std::uint8_t* positions,
+                          BigVector<std::uint32_t>& pending, Fn& fn) const {
+    SPARSEDYN_ASSERT(elements_ < (std::size_t{1} << kIndexBits), "too many elements to gather");
+    constexpr std::uint32_t kIndexMask = (1u << kIndexBits) - 1;
+    if (pending.size() < elements_ + 28) pending.resize(elements_ + 28);
+    const int kx = KindAlong(place.at[0], n_[0]), ky = KindAlong(place.at[1], n_[1]),
+              kz = KindAlong(place.at[2], n_[2]);
+    const std::int32_t* offsets = wrap_offsets_[static_cast<std::size_t>(kx + 3 * ky + 9 * kz)].data();
+    const double* sx = wrap_shifts_[0][static_cast<std::size_t>(kx)].data();
+    const double* sy = wrap_shifts_[1][static_cast<std::size_t>(ky)].data();
+    const double* sz = wrap_shifts_[2][static_cast<std::size_t>(kz)].data();
+    std::uint32_t* buffer = pending.data();
+    std::uint32_t n = 0;
+    for (int k = 0; k < kCount; ++k) {
+      // All 27: the positions in order (constants once unrolled), else the crossing's 9.
+      const std::uint32_t r = kCount == 27 ? static_cast<std::uint32_t>(k) : positions[k];
+      const std::uint32_t h = head_[place.cell + static_cast<std::uint32_t>(offsets[r])];
+      buffer[n] = h | std::uint32_t{kPositionTags[r]} << kIndexBits;  // empty: overwritten
+      n += h != kNoIndex ? 1u : 0u;
+    }
+    for (std::uint32_t k = 0; k < n; ++k) {
+      const std::uint32_t entry = buffer[k];
+      const std::uint32_t j = entry & kIndexMask;
+      const std::uint32_t next = Links(j).next;
+      buffer[n] = next | (entry & ~kIndexMask);
+      n += next != kNoIndex ? 1u : 0u;
+      const std::uint32_t tag = entry >> kIndexBits;
+      fn(j, Vec3(sx[tag & 3], sy[(tag >> 2) & 3], sz[tag >> 4]));
+    }
+  }
+  // Position r as the work list's tag, ix | iy << 2 | iz << 4 (no division in the walk).
+  static constexpr std::array<std::uint8_t, 27> kPositionTags = [] {
+    std::array<std::uint8_t, 27> tags{};
+    for (int r = 0; r < 27; ++r) tags[r] = static_cast<std::uint8_t>(r % 3 | r / 3 % 3 << 2 | r / 9 << 4);
+    return tags;
+  }();
+  static constexpr std::array<std::uint8_t, 27> kAllPositions = [] {
+    std::array<std::uint8_t, 27> all{};
+    for (std::uint8_t r = 0; r < 27; ++r) all[r] = r;
+    return all;
+  }();
+
   // Rows of three cells along x starting at cell + offsets[r]; cells + offsets[r] one by one.
   // Indices wrap as unsigned numbers: cell + offset stays inside the grid for an interior cell.
   template <typename Fn>
@@ -514,6 +575,12 @@ class Grid {
   // direction > 0)) the 9 cells that became adjacent: 9 single cells for axis x, else 3 rows.
   std::array<std::int32_t, 9> around_rows_{};
   std::array<std::array<std::int32_t, 9>, 6> new_cells_{};
+  // The outer layer of a periodic grid (VisitGatheredOuter): by kind kx + 3 ky + 9 kz, the
+  // index offsets of the 27 neighbours by position; by axis and kind, the three image shifts;
+  // for each crossing, the positions of the 9 new cells.
+  std::array<std::array<std::int32_t, 27>, 27> wrap_offsets_{};
+  std::array<std::array<std::array<double, 3>, 3>, 3> wrap_shifts_{};
+  std::array<std::array<std::uint8_t, 9>, 6> new_positions_{};
   bool periodic_ = false;
   BigVector<std::uint32_t> head_;  // first element of each cell
   // Each element's links (an intrusive singly linked list per cell: a cell holds about one
