@@ -429,7 +429,6 @@ class Grid {
   void VisitGatheredBlock(const Span& x, const Span& y, const Span& z,
                           BigVector<std::uint32_t>& pending, Fn& fn) const {
     SPARSEDYN_ASSERT(elements_ < (std::size_t{1} << kIndexBits), "too many elements to gather");
-    constexpr std::uint32_t kIndexMask = (1u << kIndexBits) - 1;
     if (pending.size() < elements_ + 28) pending.resize(elements_ + 28);
     std::uint32_t* buffer = pending.data();
     std::uint32_t n = 0;
@@ -443,14 +442,23 @@ class Grid {
         }
       }
     }
+    WalkTagged(buffer, n, x.shift.data(), y.shift.data(), z.shift.data(), fn);
+  }
+  // The walk of a tagged work list of n heads (VisitGatheredBlock, VisitGatheredOuter): each
+  // entry's successor is appended with its tag, and fn gets the shift the tag names
+  // (sx[ix], sy[iy], sz[iz]).
+  template <typename Fn>
+  void WalkTagged(std::uint32_t* buffer, std::uint32_t n, const double* sx, const double* sy,
+                  const double* sz, Fn& fn) const {
+    constexpr std::uint32_t kIndexMask = (1u << kIndexBits) - 1;
     for (std::uint32_t k = 0; k < n; ++k) {
       const std::uint32_t entry = buffer[k];
       const std::uint32_t j = entry & kIndexMask;
       const std::uint32_t next = Links(j).next;
       buffer[n] = next | (entry & ~kIndexMask);
       n += next != kNoIndex ? 1u : 0u;
-      const std::uint32_t at = entry >> kIndexBits;
-      fn(j, Vec3(x.shift[at & 3], y.shift[(at >> 2) & 3], z.shift[at >> 4]));
+      const std::uint32_t tag = entry >> kIndexBits;
+      fn(j, Vec3(sx[tag & 3], sy[(tag >> 2) & 3], sz[tag >> 4]));
     }
   }
   // The outer layer of a periodic grid. A cell's kind along an axis is 0 on the grid's first
@@ -465,11 +473,11 @@ class Grid {
   void VisitGatheredOuter(const Place& place, const std::uint8_t* positions,
                           BigVector<std::uint32_t>& pending, Fn& fn) const {
     SPARSEDYN_ASSERT(elements_ < (std::size_t{1} << kIndexBits), "too many elements to gather");
-    constexpr std::uint32_t kIndexMask = (1u << kIndexBits) - 1;
     if (pending.size() < elements_ + 28) pending.resize(elements_ + 28);
     const int kx = KindAlong(place.at[0], n_[0]), ky = KindAlong(place.at[1], n_[1]),
               kz = KindAlong(place.at[2], n_[2]);
-    const std::int32_t* offsets = wrap_offsets_[static_cast<std::size_t>(kx + 3 * ky + 9 * kz)].data();
+    const std::int32_t* offsets =
+        wrap_offsets_[static_cast<std::size_t>(kx + 3 * ky + 9 * kz)].data();
     const double* sx = wrap_shifts_[0][static_cast<std::size_t>(kx)].data();
     const double* sy = wrap_shifts_[1][static_cast<std::size_t>(ky)].data();
     const double* sz = wrap_shifts_[2][static_cast<std::size_t>(kz)].data();
@@ -482,20 +490,14 @@ class Grid {
       buffer[n] = h | std::uint32_t{kPositionTags[r]} << kIndexBits;  // empty: overwritten
       n += h != kNoIndex ? 1u : 0u;
     }
-    for (std::uint32_t k = 0; k < n; ++k) {
-      const std::uint32_t entry = buffer[k];
-      const std::uint32_t j = entry & kIndexMask;
-      const std::uint32_t next = Links(j).next;
-      buffer[n] = next | (entry & ~kIndexMask);
-      n += next != kNoIndex ? 1u : 0u;
-      const std::uint32_t tag = entry >> kIndexBits;
-      fn(j, Vec3(sx[tag & 3], sy[(tag >> 2) & 3], sz[tag >> 4]));
-    }
+    WalkTagged(buffer, n, sx, sy, sz, fn);
   }
   // Position r as the work list's tag, ix | iy << 2 | iz << 4 (no division in the walk).
   static constexpr std::array<std::uint8_t, 27> kPositionTags = [] {
     std::array<std::uint8_t, 27> tags{};
-    for (int r = 0; r < 27; ++r) tags[r] = static_cast<std::uint8_t>(r % 3 | r / 3 % 3 << 2 | r / 9 << 4);
+    for (int r = 0; r < 27; ++r) {
+      tags[r] = static_cast<std::uint8_t>(r % 3 | r / 3 % 3 << 2 | r / 9 << 4);
+    }
     return tags;
   }();
   static constexpr std::array<std::uint8_t, 27> kAllPositions = [] {
