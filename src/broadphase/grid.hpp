@@ -603,4 +603,43 @@ class Grid {
   std::size_t elements_ = 0;
 };
 
+// The cell move of every crossing, inline in the crossing handler: as a call, 1.1% of the
+// instructions at N = 10^4.
+inline void Grid::Link(std::uint32_t e, std::uint32_t cell) {
+  GridLinks& links = Links(e);
+  links.cell = cell;
+  links.next = head_[cell];
+  head_[cell] = e;
+}
+
+inline void Grid::Remove(std::uint32_t e) {
+  GridLinks& links = Links(e);
+  SPARSEDYN_ASSERT(links.cell != kNoIndex, "Grid::Remove of an element not in the grid");
+  std::uint32_t* at = &head_[links.cell];  // the link that names e
+  while (*at != e) {
+    SPARSEDYN_ASSERT(*at != kNoIndex, "Grid::Remove: the element is not in its cell's list");
+    at = &Links(*at).next;
+  }
+  *at = links.next;
+  links.cell = kNoIndex;
+}
+
+inline Grid::Place Grid::Move(std::uint32_t e, int axis, int direction, Vec3& shift) {
+  std::array<int, 3> c = Coordinates(Links(e).cell);
+  c[axis] += direction;
+  shift = Vec3::Zero();
+  if (c[axis] < 0) {
+    c[axis] += n_[axis];
+    shift[axis] = length_[axis];
+  } else if (c[axis] >= n_[axis]) {
+    c[axis] -= n_[axis];
+    shift[axis] = -length_[axis];
+  }
+  SPARSEDYN_ASSERT(c[axis] >= 0 && c[axis] < n_[axis], "Grid::Move outside a walled grid");
+  Remove(e);
+  const std::uint32_t cell = Index(c);
+  Link(e, cell);
+  return {cell, c};
+}
+
 }  // namespace sparsedyn

@@ -107,8 +107,9 @@ class BasicCalendarQueue {
     }
   }
 
-  /// Inserts the slot or moves its entry to the new key. `time` must not be NaN.
-  void Set(std::uint32_t slot, double time, EventKind kind) {
+  /// Inserts the slot or moves its entry to the new key. `time` must not be NaN. (Always
+  /// inline: GCC made it a call from the World's prediction, 1.3% of its instructions.)
+  [[gnu::always_inline]] void Set(std::uint32_t slot, double time, EventKind kind) {
     if (MoveHeadToBucket(slot, time, kind)) return;
     if (MoveListedToBucket(slot, time, kind)) return;
     SetAnyhow(slot, time, kind);

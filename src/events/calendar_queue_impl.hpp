@@ -27,8 +27,10 @@ std::uint32_t BasicCalendarQueue<Payload>::Classify(double time) const {
   return ListOf(q);
 }
 
+// Inline in Rollover's passes, which call it for every entry.
 template <typename Payload>
-void BasicCalendarQueue<Payload>::Link(std::uint32_t slot, std::uint32_t where) {
+[[gnu::always_inline]] inline void BasicCalendarQueue<Payload>::Link(std::uint32_t slot,
+                                                                     std::uint32_t where) {
   if (where == kNear) {
     NearPush(NodeOf(slot));
     return;

@@ -199,8 +199,10 @@ Event World::Impl::FinishPrediction(std::uint32_t i, const Candidate& best) {
   return event;
 }
 
-World::Impl::Crossing World::Impl::PredictLinearCrossing(std::uint32_t i,
-                                                         const Grid::Place& place) const {
+// Inline in PredictWith, as Schedule below: a call of each was 1.2% and 1.6% of the
+// instructions at N = 10^4 (saving and restoring registers around a few dozen instructions).
+[[gnu::always_inline]] inline World::Impl::Crossing World::Impl::PredictLinearCrossing(
+    std::uint32_t i, const Grid::Place& place) const {
   const PathStart& start = starts_[i];
   Crossing crossing{0.0, 0, 1};
   const double dt = grid_->PredictLinearCrossing(start.p0, start.v0, place, now_ - start.t0,
@@ -234,7 +236,7 @@ Event World::Impl::FinishLinearPrediction(std::uint32_t i, const Candidate& best
   return event;
 }
 
-void World::Impl::Schedule(std::uint32_t i, const Event& event) {
+[[gnu::always_inline]] inline void World::Impl::Schedule(std::uint32_t i, const Event& event) {
   const PhaseTimer timer(settings_.profile_phases, stats_.seconds_queue);
   PredictionOf(i).kind = event.kind;
   PredictionOf(i).aux = event.aux;
