@@ -119,10 +119,8 @@ edmd_time() {  # log
 
 # One round: EDMD and gas_bench set up and settle side by side; then gas_bench's slices and
 # EDMD's alternate (gas_bench first in odd rounds). Sets r_edmd and r_ours, collisions per CPU s.
-round() {  # n dir edmd_binary stretch slice_seconds ours_first
-  local n=$1 dir=$2 binary=$3 stretch=$4 slice=$5 ours_first=$6
-  local t_eq
-  t_eq=$(awk -v r="$rate" 'BEGIN { printf "%.17g", 2 / r }')
+round() {  # n dir edmd_binary stretch slice_seconds ours_first t_eq
+  local n=$1 dir=$2 binary=$3 stretch=$4 slice=$5 ours_first=$6 t_eq=$7
   rm -f "$work"/pipe_* "$work"/ready "$work"/edmd.log "$work"/ours.json
   mkfifo "$work/pipe_ours" "$work/pipe_edmd" "$work/pipe_out"
   (cd "$dir" && exec taskset -c "$core" stdbuf -oL "$binary" >"$work/pipe_out") &
@@ -211,7 +209,7 @@ for n in $sizes; do
   : >"$dir/edmd.txt"
   : >"$dir/ours.txt"
   for ((r = 1; r <= rounds; ++r)); do
-    round "$n" "$dir" "$dir/md" "$stretch" "$slice" $((r % 2))
+    round "$n" "$dir" "$dir/md" "$stretch" "$slice" $((r % 2)) "$t_eq"
     ratio=$(awk -v a="$r_edmd" -v b="$r_ours" 'BEGIN { printf "%.3f", b / a }')
     ratios+=("$ratio")
     echo "$r_edmd" >>"$dir/edmd.txt"

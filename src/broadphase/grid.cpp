@@ -69,24 +69,21 @@ Grid::Grid(const Config& config, std::uint32_t element_capacity)
 }
 
 void Grid::BuildOuterTables() {
-  // Along axis k, a cell of kind 0 (first layer) finds its -1 neighbour on the last layer,
-  // whose image lies a box length below; kind 2 (last layer) its +1 neighbour on the first.
+  if (!periodic_) return;  // walled grids gather through spans (cells beyond a wall are left out)
+  // Along axis k, a cell of each kind sees the spans a cell on that layer sees (Around: the
+  // first layer's -1 neighbour wraps to the last layer, its image a box length below, and the
+  // last layer's +1 neighbour to the first), as offsets from the cell itself.
   std::array<std::array<std::array<std::int32_t, 3>, 3>, 3> step{};  // [axis][kind][i]
   for (int k = 0; k < 3; ++k) {
-    const auto stride = static_cast<std::int32_t>(stride_[k]);
     for (int kind = 0; kind < 3; ++kind) {
+      const int at = kind == 0 ? 0 : (kind == 2 ? n_[k] - 1 : 1);
+      Span span{};
+      Around(k, at, span);
+      SPARSEDYN_ASSERT(span.count == 3, "a periodic grid has 3 neighbours per axis");
+      const std::uint32_t middle = static_cast<std::uint32_t>(at) * stride_[k];
       for (int i = 0; i < 3; ++i) {
-        int d = i - 1;
-        double shift = 0.0;
-        if (kind == 0 && d < 0) {
-          d += n_[k];
-          shift = -length_[k];
-        } else if (kind == 2 && d > 0) {
-          d -= n_[k];
-          shift = length_[k];
-        }
-        step[k][kind][i] = d * stride;
-        wrap_shifts_[k][kind][i] = periodic_ ? shift : 0.0;
+        step[k][kind][i] = static_cast<std::int32_t>(span.offset[i] - middle);
+        wrap_shifts_[k][kind][i] = span.shift[i];
       }
     }
   }

@@ -227,7 +227,7 @@ class Grid {
   void ForEachGatheredAroundWrapped(const Place& place, BigVector<std::uint32_t>& pending,
                                     Fn&& fn) const {
     if (periodic_) {
-      VisitGatheredOuter<27>(place, kAllPositions.data(), pending, fn);
+      VisitGatheredOuter<27>(place, /*positions=*/nullptr, pending, fn);
       return;
     }
     const std::array<Span, 3> spans = AroundSpans(place);
@@ -469,6 +469,7 @@ class Grid {
   // an interior one does, instead of working out spans: at N = 10^4 the outer layer holds a
   // seventh of the cells, and its gathers, through spans, cost twice an interior one.
   static int KindAlong(int at, int n) { return (at != 0 ? 1 : 0) + (at == n - 1 ? 1 : 0); }
+  // kCount 27: every position, in order (`positions` unused); 9: the crossing's `positions`.
   template <int kCount, typename Fn>
   void VisitGatheredOuter(const Place& place, const std::uint8_t* positions,
                           BigVector<std::uint32_t>& pending, Fn& fn) const {
@@ -484,7 +485,7 @@ class Grid {
     std::uint32_t* buffer = pending.data();
     std::uint32_t n = 0;
     for (int k = 0; k < kCount; ++k) {
-      // All 27: the positions in order (constants once unrolled), else the crossing's 9.
+      // All 27: constants once unrolled.
       const std::uint32_t r = kCount == 27 ? static_cast<std::uint32_t>(k) : positions[k];
       const std::uint32_t h = head_[place.cell + static_cast<std::uint32_t>(offsets[r])];
       buffer[n] = h | std::uint32_t{kPositionTags[r]} << kIndexBits;  // empty: overwritten
@@ -499,11 +500,6 @@ class Grid {
       tags[r] = static_cast<std::uint8_t>(r % 3 | r / 3 % 3 << 2 | r / 9 << 4);
     }
     return tags;
-  }();
-  static constexpr std::array<std::uint8_t, 27> kAllPositions = [] {
-    std::array<std::uint8_t, 27> all{};
-    for (std::uint8_t r = 0; r < 27; ++r) all[r] = r;
-    return all;
   }();
 
   // Rows of three cells along x starting at cell + offsets[r]; cells + offsets[r] one by one.
