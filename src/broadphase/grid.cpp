@@ -59,8 +59,14 @@ Grid::Grid(const Config& config, std::uint32_t element_capacity)
       for (int b = -1; b <= 1; ++b, ++r) new_cells_[side][r] = direction + a * sy + b * sz;
       new_cells_[2 + side][a + 1] = direction * sy + a * sz - 1;
       new_cells_[4 + side][a + 1] = direction * sz + a * sy - 1;
+      for (int b = -1; b <= 1; ++b) {
+        new_singles_[2 + side][(a + 1) * 3 + b + 1] = direction * sy + a * sz + b;
+        new_singles_[4 + side][(a + 1) * 3 + b + 1] = direction * sz + a * sy + b;
+      }
     }
   }
+  new_singles_[0] = new_cells_[0];
+  new_singles_[1] = new_cells_[1];
   BuildOuterTables();
   head_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2], kNoIndex);
   cells_ = FastDivisor(static_cast<std::uint32_t>(head_.size()));

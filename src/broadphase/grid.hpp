@@ -212,12 +212,10 @@ class Grid {
   template <typename Fn>
   void ForEachGatheredNew(const Place& place, int axis, int direction,
                           BigVector<std::uint32_t>& pending, Fn&& fn) const {
+    // Nine single cells whatever the axis: which axis was crossed is a coin toss, and a branch
+    // on it (rows along x for y and z) was mispredicted at every third crossing.
     const int side = axis * 2 + (direction > 0 ? 1 : 0);
-    if (axis == 0) {
-      VisitGathered<9, 1>(place.cell, new_cells_[side].data(), pending, fn);  // single cells
-    } else {
-      VisitGathered<3, 3>(place.cell, new_cells_[side].data(), pending, fn);  // rows along x
-    }
+    VisitGathered<9, 1>(place.cell, new_singles_[side].data(), pending, fn);
   }
 
   /// ForEachGatheredAround for any `place`, the grid's outer layer included: calls fn(j, shift)
@@ -573,6 +571,8 @@ class Grid {
   // direction > 0)) the 9 cells that became adjacent: 9 single cells for axis x, else 3 rows.
   std::array<std::int32_t, 9> around_rows_{};
   std::array<std::array<std::int32_t, 9>, 6> new_cells_{};
+  // The same 9 cells as single cells for every side (ForEachGatheredNew).
+  std::array<std::array<std::int32_t, 9>, 6> new_singles_{};
   // The outer layer of a periodic grid (VisitGatheredOuter): by kind kx + 3 ky + 9 kz, the
   // index offsets of the 27 neighbours by position; by axis and kind, the three image shifts;
   // for each crossing, the positions of the 9 new cells.

@@ -309,8 +309,23 @@ class BasicCalendarQueue {
     // The earliest entry by a scan of selects: no branch on the (random) comparisons.
     std::uint32_t best = 0;
     const auto size = static_cast<std::uint32_t>(near_.size());
-    for (std::uint32_t at = 1; at < size; ++at) best = Less(near_[at], near_[best]) ? at : best;
+    for (std::uint32_t at = 1; at < size; ++at) {
+      const std::uint32_t earlier = EarlierOf(near_[at], near_[best]);
+      best = (at & (0u - earlier)) | (best & (earlier - 1u));
+    }
     top_ = best;
+  }
+  // Less as 0 or 1 without a branch: GCC compiles Less's short circuit, and even `|` and `?:`
+  // on its parts, to jumps on the (random) times; the compare masks below it keeps as data.
+  static std::uint32_t EarlierOf(const Node& a, const Node& b) {
+#if defined(__SSE2__)
+    const __m128d ta = _mm_set_sd(a.time), tb = _mm_set_sd(b.time);
+    const auto lt = static_cast<std::uint32_t>(_mm_movemask_pd(_mm_cmplt_sd(ta, tb)) & 1);
+    const auto eq = static_cast<std::uint32_t>(_mm_movemask_pd(_mm_cmpeq_sd(ta, tb)) & 1);
+    return lt | (eq & static_cast<std::uint32_t>(a.order < b.order));
+#else
+    return Less(a, b) ? 1u : 0u;
+#endif
   }
   void MakeHeap();
   void NearPlace(std::uint32_t at, const Node& node) {
@@ -320,10 +335,13 @@ class BasicCalendarQueue {
   // Takes entry `at` out of the current bucket as a list: the last entry fills the hole; the
   // earliest is looked for again only if it left.
   void ListErase(std::uint32_t at) {
+    // Unconditional: when `at` is the last entry it is written onto itself (and its slot's
+    // link, which a leaving entry rewrites or no longer uses), instead of a branch on where
+    // the entry sat.
     const Node last = near_.back();
+    NearPlace(at, last);
     near_.pop_back();
     const auto size = static_cast<std::uint32_t>(near_.size());
-    if (at != size) NearPlace(at, last);
     if (top_ == at) {
       FindTop();
     } else if (top_ == size) {
