@@ -411,9 +411,14 @@ class Grid {
       }
     }
     const Vec3 no_shift = Vec3::Zero();  // interior cells
+    // The link array's address and stride in registers: the buffer's writes (unsigned, like
+    // links_shift_) would otherwise make the compiler reload them for every element.
+    const char* const links = links_;
+    const unsigned links_shift = links_shift_;
     for (std::uint32_t k = 0; k < n; ++k) {
       const std::uint32_t j = buffer[k];
-      const std::uint32_t next = Links(j).next;
+      const std::uint32_t next =
+          reinterpret_cast<const GridLinks*>(links + (std::size_t{j} << links_shift))->next;
       buffer[n] = next;
       n += next != kNoIndex ? 1u : 0u;
       fn(j, no_shift);
