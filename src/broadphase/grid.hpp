@@ -197,11 +197,12 @@ class Grid {
   }
 
   /// For an interior `place`: calls fn(j, shift) (shift zero) for every element j of the 27
-  /// cells around it, the place's own elements included (what ForEachNeighbor visits, plus e), in another order and
-  /// without a branch on which cells are empty or how long their lists are: in a gas most cells
-  /// hold zero or one element, and a walk that branches on that is mispredicted every few cells.
-  /// `pending` is the work list (resized to hold every element, so it never grows during a
-  /// visit); fn may overwrite its entries up to the one it is called for (they have been read).
+  /// cells around it, the place's own elements included (what ForEachNeighbor visits, plus e), in
+  /// another order and without a branch on which cells are empty or how long their lists are: in a
+  /// gas most cells hold zero or one element, and a walk that branches on that is mispredicted
+  /// every few cells. `pending` is the work list (resized to hold every element, so it never grows
+  /// during a visit); fn may overwrite its entries up to the one it is called for (they have been
+  /// read).
   template <typename Fn>
   void ForEachGatheredAround(const Place& place, BigVector<std::uint32_t>& pending, Fn&& fn) const {
     VisitGathered<9, 3>(place.cell, around_rows_.data(), pending, fn);
@@ -281,9 +282,7 @@ class Grid {
     }
   }
   /// FetchNewFirsts for the 27 cells around `cell`, ahead of ForEachGatheredAround.
-  void FetchAroundFirsts(std::uint32_t cell) const {
-    FetchFirsts(cell, around_rows_.data(), 9, 3);
-  }
+  void FetchAroundFirsts(std::uint32_t cell) const { FetchFirsts(cell, around_rows_.data(), 9, 3); }
   /// The cell across (axis, direction) from `cell`, wrapped into the grid as an index only.
   std::uint32_t CellAcross(std::uint32_t cell, int axis, int direction) const {
     return cells_.Remainder(cell + static_cast<std::uint32_t>(direction) * stride_[axis]);

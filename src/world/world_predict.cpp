@@ -48,29 +48,32 @@ struct RelativeMotion {
   Eigen::Vector2d dp_xy, dv_xy;
   double dp_z, dv_z;
 };
+// Both positions at the later segment start: i's at (a_xy, a_z), j's at (b_xy, b_z).
+struct LaterStartPositions {
+  Eigen::Vector2d a_xy, b_xy;
+  double a_z, b_z;
+};
+[[gnu::always_inline]] inline LaterStartPositions AtLaterStart(const PathStart& pi,
+                                                               const PathStart& pj) {
+  const double reference = MaxOf(pi.t0, pj.t0);
+  const double since_i = reference - pi.t0, since_j = reference - pj.t0;
+  return {pi.p0.head<2>() + since_i * pi.v0.head<2>(), pj.p0.head<2>() + since_j * pj.v0.head<2>(),
+          pi.p0[2] + since_i * pi.v0[2], pj.p0[2] + since_j * pj.v0[2]};
+}
 [[gnu::always_inline]] inline RelativeMotion RelativeMotionOf(const PathStart& pi,
                                                               const PathStart& pj,
                                                               const Vec3& shift) {
-  const double reference = MaxOf(pi.t0, pj.t0);
-  const double since_i = reference - pi.t0, since_j = reference - pj.t0;
-  const Eigen::Vector2d a_xy = pi.p0.head<2>() + since_i * pi.v0.head<2>();
-  const Eigen::Vector2d b_xy = pj.p0.head<2>() + since_j * pj.v0.head<2>();
-  const double a_z = pi.p0[2] + since_i * pi.v0[2];
-  const double b_z = pj.p0[2] + since_j * pj.v0[2];
-  return {(b_xy + shift.head<2>()) - a_xy, pj.v0.head<2>() - pi.v0.head<2>(),
-          (b_z + shift[2]) - a_z, pj.v0[2] - pi.v0[2]};
+  const LaterStartPositions at = AtLaterStart(pi, pj);
+  return {(at.b_xy + shift.head<2>()) - at.a_xy, pj.v0.head<2>() - pi.v0.head<2>(),
+          (at.b_z + shift[2]) - at.a_z, pj.v0[2] - pi.v0[2]};
 }
 // The same without a shift (interior cells): adding a zero shift changes only the sign of a
 // zero coordinate, which no test of the motion can see, so the decisions are the same.
 [[gnu::always_inline]] inline RelativeMotion RelativeMotionOf(const PathStart& pi,
                                                               const PathStart& pj) {
-  const double reference = MaxOf(pi.t0, pj.t0);
-  const double since_i = reference - pi.t0, since_j = reference - pj.t0;
-  const Eigen::Vector2d a_xy = pi.p0.head<2>() + since_i * pi.v0.head<2>();
-  const Eigen::Vector2d b_xy = pj.p0.head<2>() + since_j * pj.v0.head<2>();
-  const double a_z = pi.p0[2] + since_i * pi.v0[2];
-  const double b_z = pj.p0[2] + since_j * pj.v0[2];
-  return {b_xy - a_xy, pj.v0.head<2>() - pi.v0.head<2>(), b_z - a_z, pj.v0[2] - pi.v0[2]};
+  const LaterStartPositions at = AtLaterStart(pi, pj);
+  return {at.b_xy - at.a_xy, pj.v0.head<2>() - pi.v0.head<2>(), at.b_z - at.a_z,
+          pj.v0[2] - pi.v0[2]};
 }
 
 }  // namespace
