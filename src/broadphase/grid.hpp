@@ -416,8 +416,7 @@ class Grid {
     const unsigned links_shift = links_shift_;
     for (std::uint32_t k = 0; k < n; ++k) {
       const std::uint32_t j = buffer[k];
-      const std::uint32_t next =
-          reinterpret_cast<const GridLinks*>(links + (std::size_t{j} << links_shift))->next;
+      const std::uint32_t next = NextIn(links, links_shift, j);
       buffer[n] = next;
       n += next != kNoIndex ? 1u : 0u;
       fn(j, no_shift);
@@ -453,10 +452,12 @@ class Grid {
   void WalkTagged(std::uint32_t* buffer, std::uint32_t n, const double* sx, const double* sy,
                   const double* sz, Fn& fn) const {
     constexpr std::uint32_t kIndexMask = (1u << kIndexBits) - 1;
+    const char* const links = links_;  // in registers, as in VisitGathered
+    const unsigned links_shift = links_shift_;
     for (std::uint32_t k = 0; k < n; ++k) {
       const std::uint32_t entry = buffer[k];
       const std::uint32_t j = entry & kIndexMask;
-      const std::uint32_t next = Links(j).next;
+      const std::uint32_t next = NextIn(links, links_shift, j);
       buffer[n] = next | (entry & ~kIndexMask);
       n += next != kNoIndex ? 1u : 0u;
       const std::uint32_t tag = entry >> kIndexBits;
@@ -594,6 +595,10 @@ class Grid {
   }
   GridLinks& Links(std::uint32_t e) {
     return *reinterpret_cast<GridLinks*>(links_ + (std::size_t{e} << links_shift_));
+  }
+  // Links(j).next from the link array's address and stride, which a loop holds in registers.
+  static std::uint32_t NextIn(const char* links, unsigned links_shift, std::uint32_t j) {
+    return reinterpret_cast<const GridLinks*>(links + (std::size_t{j} << links_shift))->next;
   }
   bool OwnsLinks() const { return links_ == reinterpret_cast<const char*>(own_links_.data()); }
   void UseOwnLinks() { UseLinks(own_links_.data(), StrideShiftOf<GridLinks>(), own_links_.size()); }
