@@ -79,18 +79,12 @@ const char* EventKindName(int k) { return kEventKindNames.at(static_cast<std::si
 
 World::Impl::Impl(const WorldSettings& settings)
     : settings_(settings),
+      period_(settings.container.kind == Container::Kind::kPeriodicBox
+                  ? Vec3(settings.container.hi - settings.container.lo)
+                  : Vec3::Zero()),
+      periodic_(settings.container.kind == Container::Kind::kPeriodicBox),
       uniform_acceleration_(settings.gravity),
-      overlap_index_(settings.container.lo,
-                     settings.container.kind == Container::Kind::kPeriodicBox
-                         ? Vec3(settings.container.hi - settings.container.lo)
-                         : Vec3::Zero()) {}
-
-Vec3 World::Impl::MinimumImage(Vec3 d) const {
-  if (settings_.container.kind != Container::Kind::kPeriodicBox) return d;
-  const Vec3 length = settings_.container.hi - settings_.container.lo;
-  for (int k = 0; k < 3; ++k) d[k] -= length[k] * RoundNearOne(d[k] / length[k]);
-  return d;
-}
+      overlap_index_(settings.container.lo, period_) {}
 
 Vec3 World::Impl::WrapIntoBox(Vec3 p) const {
   if (settings_.container.kind != Container::Kind::kPeriodicBox) return p;
@@ -305,7 +299,8 @@ void World::Impl::Start() {
   // collisions per CPU s, at 10^5 +14%, at 6x10^4 about +10%; at 3x10^4 -5% and at 10^4 -7%,
   // where the data are at hand anyway (docs/benchmarks.md, eleventh measurement).
   fetch_ahead_ = straight_lines_ && grid_ && n >= kFetchAheadMinElements;
-  linear_finish_ = straight_lines_ && grid_ && settings_.container.kind != Container::Kind::kWalledBox;
+  linear_finish_ =
+      straight_lines_ && grid_ && settings_.container.kind != Container::Kind::kWalledBox;
   if (grid_) Reorder();  // start in spatial order
   events_since_reorder_ = 0;
   SetReorderPeriod();
@@ -410,8 +405,8 @@ std::size_t World::Impl::MemoryBytes() const {
       material_index_.size() * (sizeof(std::array<double, 4>) + 40) +
       material_.capacity() * sizeof(std::uint32_t) + envelope_.capacity() * sizeof(Envelope) +
       (public_of_.capacity() + internal_of_.capacity()) * sizeof(std::uint32_t) +
-      queue_.MemoryBytes() +
-      engagement_queue_.MemoryBytes() + gathered_.capacity() * sizeof(std::uint32_t);
+      queue_.MemoryBytes() + engagement_queue_.MemoryBytes() +
+      gathered_.capacity() * sizeof(std::uint32_t);
   bytes += shape_.capacity() * sizeof(std::uint32_t) + q0_.capacity() * sizeof(Eigen::Quaterniond) +
            omega_.capacity() * sizeof(Vec3) + spin_radius_.capacity() * sizeof(double);
   if (grid_) bytes += grid_->MemoryBytes();

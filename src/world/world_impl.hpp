@@ -50,6 +50,9 @@ class World::Impl {
   Status AdvanceTo(double t);
 
   WorldSettings settings_;
+  // The periodic box's side lengths (MinimumImage; zero outside periodic boxes).
+  Vec3 period_ = Vec3::Zero();
+  bool periodic_ = false;
   Statistics stats_;
   std::function<void(const CollisionEvent&)> on_collision_;
   std::function<void(const MotionSegment&)> on_segment_;
@@ -178,7 +181,12 @@ class World::Impl {
   // --- start-up and checks (world.cpp) ---
   void Start();
   std::optional<std::uint32_t> FindOverlap(const Vec3& p, double radius) const;
-  Vec3 MinimumImage(Vec3 d) const;
+  // Inline: a collision of a gas checks its pair's distance through it.
+  Vec3 MinimumImage(Vec3 d) const {
+    if (!periodic_) return d;
+    for (int k = 0; k < 3; ++k) d[k] -= period_[k] * RoundNearOne(d[k] / period_[k]);
+    return d;
+  }
   Vec3 WrapIntoBox(Vec3 p) const;
 
   // --- memory order (world_reorder.cpp) ---
