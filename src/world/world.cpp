@@ -225,8 +225,10 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   const bool larger = radius > max_radius_;
   max_radius_ = std::max(max_radius_, radius);
   if (started_) {
-    // A bigger body or the first envelope can change the broad phase: rebuild it.
-    if (larger || (has_envelopes_ && grid_)) {
+    // A bigger body or the first envelope can change the broad phase, and the first body off
+    // straight lines (a thrust of its own, an envelope, a polyhedron) ends the fast paths that
+    // assume them: rebuild.
+    if (larger || (has_envelopes_ && grid_) || (straight_lines_ && !StraightLines())) {
       Start();
     } else {
       const auto i = static_cast<std::uint32_t>(index);
@@ -259,9 +261,7 @@ void World::Impl::Start() {
     SetStart(i, PathStart{WrapIntoBox(path.p0), path.v0, path.t0});
   }
 
-  // The fast scan skips the engaged-pair check: only for spheres without envelopes.
-  straight_lines_ = !has_envelopes_ && !polyhedra_;
-  straight_lines_ = straight_lines_ && !own_accelerations_ && uniform_acceleration_.isZero(0.0);
+  straight_lines_ = StraightLines();
   // The batch pair test (TestGathered) while the elements' data fit in the caches: it trades
   // mispredicted branches for instructions, a gain when the data are at hand (N = 10^4: +30%
   // collisions per CPU s) and a loss when each pair waits for main memory, where the branching

@@ -163,6 +163,12 @@ class World::Impl {
   bool started_ = false;
   bool has_envelopes_ = false;
   bool straight_lines_ = false;  // no envelopes and no acceleration: the fast meeting test
+  // Whether every element is a sphere without an envelope on a straight line (straight_lines_
+  // as Start sets it; the fast scan also skips the engaged-pair check).
+  bool StraightLines() const {
+    return !has_envelopes_ && !polyhedra_ && !own_accelerations_ &&
+           uniform_acceleration_.isZero(0.0);
+  }
   bool batch_tests_ = false;     // straight lines, few enough elements: TestGathered
   bool fetch_ahead_ = false;     // a gas on a grid beyond the caches: FetchAhead
   bool linear_finish_ = false;   // straight lines on a grid, no walls: FinishLinearPrediction

@@ -37,8 +37,8 @@ TEST(WorldTwoBody, HeadOnEqualMassesExchangeVelocitiesAtContactTime) {
 
 TEST(WorldTwoBody, UnequalMassesConserveMomentumAndEnergy) {
   World world;
-  const BodyId a = *world.AddBody(
-      {.radius = 0.5, .position = {0, 0, 0}, .velocity = {1, 0.3, 0}, .mass = 3.0});
+  const BodyId a =
+      *world.AddBody({.radius = 0.5, .position = {0, 0, 0}, .velocity = {1, 0.3, 0}, .mass = 3.0});
   const BodyId b = *world.AddBody(
       {.radius = 0.7, .position = {4, 0.5, 0.1}, .velocity = {-1, 0, 0}, .mass = 0.5});
   const double energy = world.KineticEnergy();
@@ -53,11 +53,12 @@ TEST(WorldTwoBody, UnequalMassesConserveMomentumAndEnergy) {
 
 TEST(WorldTwoBody, InelasticRestitutionScalesNormalRelativeVelocity) {
   World world;
-  const BodyId a =
-      *world.AddBody({.radius = 1, .position = {0, 0, 0}, .velocity = {1, 0, 0}, .restitution = 0.5});
+  const BodyId a = *world.AddBody(
+      {.radius = 1, .position = {0, 0, 0}, .velocity = {1, 0, 0}, .restitution = 0.5});
   const BodyId b = *world.AddBody({.radius = 1, .position = {3, 0, 0}, .restitution = 1.0});
   ASSERT_TRUE(world.AdvanceTo(2.0));
-  const double separation_speed = world.StateAt(b, 2).velocity.x() - world.StateAt(a, 2).velocity.x();
+  const double separation_speed =
+      world.StateAt(b, 2).velocity.x() - world.StateAt(a, 2).velocity.x();
   EXPECT_NEAR(separation_speed, 0.5, 1e-14);  // e = 0.5 * 1.0
 }
 
@@ -92,20 +93,51 @@ TEST(WorldTwoBody, ThrustingBodyCatchesRestingOne) {
   World world;
   Recorder recorder;
   recorder.Attach(world);
-  (void)*world.AddBody({.radius = 1, .position = {0, 0, 0}, .velocity = {1, 0, 0},
-                        .thrust = {2, 0, 0}});
+  (void)*world.AddBody(
+      {.radius = 1, .position = {0, 0, 0}, .velocity = {1, 0, 0}, .thrust = {2, 0, 0}});
   (void)*world.AddBody({.radius = 1, .position = {10, 0, 0}});
   ASSERT_TRUE(world.AdvanceTo(3.0));
   ASSERT_GE(recorder.events.size(), 1u);
   EXPECT_NEAR(recorder.events[0].time, (-1 + std::sqrt(33.0)) / 2, 1e-12);
 }
 
+// The world starts with straight lines only (its fast paths); a body with a thrust of its own
+// added afterwards must be predicted, and collide, on its parabola. In open space (AllPairs)
+// and in a periodic box (the Grid, the gas's paths).
+class ThrustAddedWhileRunning : public ::testing::TestWithParam<Container> {};
+
+TEST_P(ThrustAddedWhileRunning, CatchesRestingBodyOnItsParabola) {
+  WorldSettings settings;
+  settings.container = GetParam();
+  World world(settings);
+  Recorder recorder;
+  recorder.Attach(world);
+  (void)*world.AddBody({.radius = 1, .position = {10, 0, 0}});
+  (void)*world.AddBody({.radius = 1, .position = {0, 20, 0}, .velocity = {0.5, 0, 0}});
+  ASSERT_TRUE(world.AdvanceTo(1.0));
+  (void)*world.AddBody(
+      {.radius = 1, .position = {0, 0, 0}, .velocity = {1, 0, 0}, .thrust = {2, 0, 0}});
+  ASSERT_TRUE(world.AdvanceTo(4.0));
+  ASSERT_GE(recorder.events.size(), 1u);
+  EXPECT_NEAR(recorder.events[0].time, 1.0 + (-1 + std::sqrt(33.0)) / 2, 1e-12);
+  EXPECT_TRUE(world.Validate());
+}
+
+INSTANTIATE_TEST_SUITE_P(WorldTwoBody, ThrustAddedWhileRunning,
+                         ::testing::Values(Container::Open(),
+                                           Container::PeriodicBox({-15, -15, -15}, {25, 25, 25})),
+                         [](const ::testing::TestParamInfo<Container>& param_info) {
+                           return param_info.param.kind == Container::Kind::kOpen ? "Open"
+                                                                                  : "Periodic";
+                         });
+
 TEST(WorldTwoBody, EnvelopedBodiesEngageBeforeTheyCollide) {
   World world;
   Recorder recorder;
   recorder.Attach(world);
   const Envelope skin{.e0 = 0.5, .e1 = 0.1, .e2 = 0};
-  (void)*world.AddBody({.radius = 1, .position = {0, 0, 0}, .velocity = {1, 0, 0}, .envelope = skin});
+  (void)*world.AddBody(
+      {.radius = 1, .position = {0, 0, 0}, .velocity = {1, 0, 0}, .envelope = skin});
   (void)*world.AddBody({.radius = 1, .position = {10, 0, 0}, .velocity = {-1, 0, 0}});
   ASSERT_TRUE(world.AdvanceTo(10.0));
   EXPECT_EQ(world.Stats().engagements_started, 1u);
@@ -117,7 +149,7 @@ TEST(WorldTwoBody, EnvelopedBodiesEngageBeforeTheyCollide) {
 TEST(WorldTwoBody, StaleTargetMakesActorPredictAgain) {
   // c aims at b, but a strikes b first: c's meeting is target-absent when it comes up.
   World world;
-  (void)*world.AddBody({.radius = 0.5, .position = {-3, 0, 0}, .velocity = {2, 0, 0}});   // a
+  (void)*world.AddBody({.radius = 0.5, .position = {-3, 0, 0}, .velocity = {2, 0, 0}});  // a
   (void)*world.AddBody({.radius = 0.5, .position = {0, 0, 0}});                          // b
   (void)*world.AddBody({.radius = 0.5, .position = {0, 5, 0}, .velocity = {0, -1, 0}});  // c
   ASSERT_TRUE(world.AdvanceTo(20.0));
