@@ -87,12 +87,9 @@ World::Impl::Impl(const WorldSettings& settings)
       overlap_index_(settings.container.lo, period_) {}
 
 Vec3 World::Impl::WrapIntoBox(Vec3 p) const {
-  if (settings_.container.kind != Container::Kind::kPeriodicBox) return p;
-  const Container& box = settings_.container;
-  for (int k = 0; k < 3; ++k) {
-    const double length = box.hi[k] - box.lo[k];
-    p[k] -= length * std::floor((p[k] - box.lo[k]) / length);
-  }
+  if (!periodic_) return p;
+  const Vec3& lo = settings_.container.lo;
+  for (int k = 0; k < 3; ++k) p[k] -= period_[k] * std::floor((p[k] - lo[k]) / period_[k]);
   return p;
 }
 

@@ -94,6 +94,16 @@ class World::Impl {
     const PathStart& s = starts_[i];
     return Path{s.p0, s.v0, own_accelerations_ ? acceleration_[i] : uniform_acceleration_, s.t0};
   }
+  // Body i's position and velocity now. On straight lines without the zero acceleration's terms
+  // (the same numbers up to the sign of a zero) and without building its Path: a collision of a
+  // gas asks for them six times.
+  Vec3 PositionNow(std::uint32_t i) const {
+    const PathStart& s = starts_[i];
+    return straight_lines_ ? Vec3(s.p0 + (now_ - s.t0) * s.v0) : PathOf(i).PositionAt(now_);
+  }
+  Vec3 VelocityNow(std::uint32_t i) const {
+    return straight_lines_ ? starts_[i].v0 : PathOf(i).VelocityAt(now_);
+  }
   double Radius(std::uint32_t i) const { return materials_[material_[i]].radius; }
   double InvMass(std::uint32_t i) const { return materials_[material_[i]].inv_mass; }
   double Restitution(std::uint32_t i) const { return materials_[material_[i]].restitution; }

@@ -145,22 +145,12 @@ void World::Impl::HandleCellCrossing(std::uint32_t i) {
 
 bool World::Impl::TouchingAndApproaching(std::uint32_t i, std::uint32_t j, Vec3& normal,
                                          double& gap) const {
-  Vec3 d, dv;
-  if (straight_lines_) {
-    // No acceleration: the paths' positions and velocities without their zero terms (the same
-    // numbers up to the sign of a zero), and no Path built four times per collision.
-    const PathStart& a = starts_[i];
-    const PathStart& b = starts_[j];
-    d = MinimumImage((b.p0 + (now_ - b.t0) * b.v0) - (a.p0 + (now_ - a.t0) * a.v0));
-    dv = b.v0 - a.v0;
-  } else {
-    d = MinimumImage(PathOf(j).PositionAt(now_) - PathOf(i).PositionAt(now_));
-    dv = PathOf(j).VelocityAt(now_) - PathOf(i).VelocityAt(now_);
-  }
+  const Vec3 d = MinimumImage(PositionNow(j) - PositionNow(i));
   const double reach = Radius(i) + Radius(j);
   const double distance = d.norm();
   gap = distance - reach;
   normal = d / distance;
+  const Vec3 dv = VelocityNow(j) - VelocityNow(i);
   return gap <= settings_.contact_tolerance * reach && d.dot(dv) < 0;
 }
 
@@ -201,15 +191,11 @@ void World::Impl::NotePenetration(double gap) {
 }
 
 void World::Impl::SetVelocity(std::uint32_t i, const Vec3& v) {
-  const Path path = PathOf(i);
-  // Straight lines: the position without the zero acceleration's terms (the same numbers).
-  const PathStart& s = starts_[i];
-  const Vec3 p = straight_lines_ ? Vec3(s.p0 + (now_ - s.t0) * s.v0) : path.PositionAt(now_);
-  SetStart(i, PathStart{p, v, now_});
+  SetStart(i, PathStart{PositionNow(i), v, now_});
   ++PredictionOf(i).version;
   if (on_segment_) {
     on_segment_(
-        MotionSegment{now_, PublicId(i), starts_[i].p0, v, path.a, PredictionOf(i).version});
+        MotionSegment{now_, PublicId(i), starts_[i].p0, v, PathOf(i).a, PredictionOf(i).version});
   }
 }
 
@@ -218,9 +204,7 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
   ImpulseResult result;
   {
     const PhaseTimer timer(settings_.profile_phases, stats_.seconds_response);
-    const Vec3 v_i = straight_lines_ ? starts_[i].v0 : PathOf(i).VelocityAt(now_);
-    const Vec3 v_j = straight_lines_ ? starts_[j].v0 : PathOf(j).VelocityAt(now_);
-    result = SphereImpulse(v_i, v_j, InvMass(i), InvMass(j), normal,
+    result = SphereImpulse(VelocityNow(i), VelocityNow(j), InvMass(i), InvMass(j), normal,
                            Restitution(i) * Restitution(j), settings_.elastic_below_speed);
     SetVelocity(i, result.v_a);
     SetVelocity(j, result.v_b);
