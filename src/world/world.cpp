@@ -250,6 +250,14 @@ void World::Impl::Start() {
   queue_.ShrinkToFit();  // one slot per element, grown one by one by AddBody
   engagement_queue_.Clear();
   engagements_.Clear();
+  // A restart (AddBody while running) predicts every element afresh below: the old predictions
+  // go with the cleared queue, which holds no times for them (Reorder would carry them over).
+  // The versions stay, as they count each body's path changes.
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t version = PredictionOf(i).version;
+    PredictionOf(i) = Prediction{};
+    PredictionOf(i).version = version;
+  }
 
   // Rebase every path at the current time so that cells and predictions start from now.
   for (std::uint32_t i = 0; i < n; ++i) {
