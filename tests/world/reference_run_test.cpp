@@ -26,7 +26,6 @@ namespace {
 using Real = long double;
 using RealVec = Eigen::Matrix<Real, 3, 1>;
 
-constexpr double kSide = 7.0;           // the box [0, kSide]^3 (the first positions in open space)
 constexpr Real kDeepestOverlap = 1e-8;  // relative to the summed radii: round-off, no more
 constexpr Real kTouching = 1e-8;        // a reported collision's gap, relative, at most
 constexpr int kSamples = 48;            // per stretch, pair and image
@@ -88,15 +87,31 @@ Real SmallestOfQuadratic(Real x0, Real v, Real a, Real span) {
 }
 
 struct Scenario {
-  Container container;
+  Container::Kind kind = Container::Kind::kWalledBox;
   Broadphase broadphase = Broadphase::kGrid;
   std::uint32_t seed = 0;
+  double side = 7.0;      // the box [0, side]^3 (where the first bodies are placed in open space)
+  int first_bodies = 8;   // at least; up to 5 more
+  int steps = 14;         // AdvanceTo calls, each followed by an AddBody half of the time
+  bool envelopes = true;  // allowed (they take the World off the grid, to AllPairs)
+  Container MakeContainer() const {
+    const Vec3 lo = Vec3::Zero(), hi = Vec3::Constant(side);
+    switch (kind) {
+      case Container::Kind::kOpen:
+        return Container::Open();
+      case Container::Kind::kWalledBox:
+        return Container::WalledBox(lo, hi);
+      case Container::Kind::kPeriodicBox:
+        return Container::PeriodicBox(lo, hi);
+    }
+    return {};
+  }
 };
 
 std::string Describe(const Scenario& s) {
-  const char* kind = s.container.kind == Container::Kind::kOpen        ? "open"
-                     : s.container.kind == Container::Kind::kWalledBox ? "walled"
-                                                                       : "periodic";
+  const char* kind = s.kind == Container::Kind::kOpen        ? "open"
+                     : s.kind == Container::Kind::kWalledBox ? "walled"
+                                                             : "periodic";
   return std::string(kind) + (s.broadphase == Broadphase::kGrid ? " grid" : " all-pairs") +
          " seed " + std::to_string(s.seed);
 }
@@ -106,7 +121,7 @@ class ReferenceRun {
  public:
   explicit ReferenceRun(const Scenario& scenario) : scenario_(scenario), rng_(scenario.seed) {
     WorldSettings settings;
-    settings.container = scenario.container;
+    settings.container = scenario.MakeContainer();
     settings.broadphase = scenario.broadphase;
     // Gravity or thrusts only with elastic bodies: an inelastic ball settling on a floor bounces
     // ever faster (the collapse guard keeps it elastic below kElasticBelow, but at a huge rate).
@@ -117,7 +132,8 @@ class ReferenceRun {
       settings.gravity = Chance(0.5) ? Vec3(0, 0, -Uniform(1, 5)) : RandomVec(3);
     }
     thrusts_ = forced_ ? static_cast<Later>(rng_() % 3) : Later::kNever;
-    envelopes_ = Chance(0.4) ? static_cast<Later>(1 + rng_() % 2) : Later::kNever;
+    envelopes_ =
+        Chance(0.4) && scenario.envelopes ? static_cast<Later>(1 + rng_() % 2) : Later::kNever;
     gravity_ = ToReal(settings.gravity);
     world_ = std::make_unique<World>(settings);
     world_->OnSegment([this](const MotionSegment& s) { pending_.push_back(s); });
@@ -125,11 +141,11 @@ class ReferenceRun {
   }
 
   std::uint64_t Run() {
-    const int first = 8 + static_cast<int>(rng_() % 6);
+    const int first = scenario_.first_bodies + static_cast<int>(rng_() % 6);
     for (int k = 0; k < first; ++k) TryAdd();
     EXPECT_GE(bodies_.size(), 3u) << where_;
     double t = 0;
-    for (int step = 0; step < 14 && !::testing::Test::HasFailure(); ++step) {
+    for (int step = 0; step < scenario_.steps && !::testing::Test::HasFailure(); ++step) {
       t += Uniform(0.2, 1.0);
       running_ = true;
       const Status status = world_->AdvanceTo(t);
@@ -142,8 +158,8 @@ class ReferenceRun {
     for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
       const BodyState state = world_->StateAt(world_->IdOf(i), t);
       RealVec d = ToReal(state.position) - bodies_[i].PositionAt(t);
-      if (scenario_.container.kind == Container::Kind::kPeriodicBox) {
-        for (int k = 0; k < 3; ++k) d[k] -= kSide * std::round(d[k] / kSide);
+      if (scenario_.kind == Container::Kind::kPeriodicBox) {
+        for (int k = 0; k < 3; ++k) d[k] -= scenario_.side * std::round(d[k] / scenario_.side);
       }
       EXPECT_LT(d.norm(), 1e-9) << where_ << ", body " << i;
       EXPECT_EQ(state.version, bodies_[i].version) << where_ << ", body " << i;
@@ -166,12 +182,12 @@ class ReferenceRun {
   void TryAdd() {
     BodyDef def;
     def.radius = Uniform(0.25, running_ ? 0.85 : 0.6);  // a bigger body added rebuilds the grid
-    const double margin = scenario_.container.kind == Container::Kind::kWalledBox ? def.radius : 0;
-    for (int k = 0; k < 3; ++k) def.position[k] = Uniform(margin, kSide - margin);
+    const double margin = scenario_.kind == Container::Kind::kWalledBox ? def.radius : 0;
+    for (int k = 0; k < 3; ++k) def.position[k] = Uniform(margin, scenario_.side - margin);
     def.velocity = RandomVec(2.0);
-    if (scenario_.container.kind == Container::Kind::kOpen) {
+    if (scenario_.kind == Container::Kind::kOpen) {
       // Towards the middle, or open space has the bodies fly apart after a few collisions.
-      def.velocity = RandomVec(1.0) + 0.6 * (Vec3::Constant(kSide / 2) - def.position);
+      def.velocity = RandomVec(1.0) + 0.6 * (Vec3::Constant(scenario_.side / 2) - def.position);
     }
     def.mass = Uniform(0.3, 3.0);
     def.restitution = forced_ || Chance(0.5) ? 1.0 : Uniform(0.6, 1.0);
@@ -199,8 +215,8 @@ class ReferenceRun {
 
   // The periodic image of b - a nearest to zero (the difference itself elsewhere).
   RealVec NearestImage(RealVec d) const {
-    if (scenario_.container.kind != Container::Kind::kPeriodicBox) return d;
-    for (int k = 0; k < 3; ++k) d[k] -= kSide * std::round(d[k] / kSide);
+    if (scenario_.kind != Container::Kind::kPeriodicBox) return d;
+    for (int k = 0; k < 3; ++k) d[k] -= scenario_.side * std::round(d[k] / scenario_.side);
     return d;
   }
 
@@ -210,7 +226,7 @@ class ReferenceRun {
     checked_until_ = std::max(checked_until_, t);
     if (!(t > from)) return;
     const Real span = t - from;
-    const bool periodic = scenario_.container.kind == Container::Kind::kPeriodicBox;
+    const bool periodic = scenario_.kind == Container::Kind::kPeriodicBox;
     const int images = periodic ? 1 : 0;
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       const ReferenceBody& a = bodies_[i];
@@ -230,7 +246,7 @@ class ReferenceRun {
         for (int x = -images; x <= images; ++x) {
           for (int y = -images; y <= images; ++y) {
             for (int z = -images; z <= images; ++z) {
-              const RealVec shift = RealVec(x, y, z) * static_cast<Real>(kSide);
+              const RealVec shift = RealVec(x, y, z) * static_cast<Real>(scenario_.side);
               Real outside = 0;  // squared distance from the origin to the image's box
               for (int k = 0; k < 3; ++k) {
                 const Real below = std::max({Real{0}, low[k] + shift[k], -(high[k] + shift[k])});
@@ -247,11 +263,12 @@ class ReferenceRun {
           }
         }
       }
-      if (scenario_.container.kind != Container::Kind::kWalledBox) continue;
+      if (scenario_.kind != Container::Kind::kWalledBox) continue;
       const RealVec p = a.PositionAt(from), v = a.VelocityAt(from);
       for (int k = 0; k < 3; ++k) {
         const Real low = SmallestOfQuadratic(p[k] - a.radius, v[k], a.a[k], span);
-        const Real high = SmallestOfQuadratic(kSide - p[k] - a.radius, -v[k], -a.a[k], span);
+        const Real high =
+            SmallestOfQuadratic(scenario_.side - p[k] - a.radius, -v[k], -a.a[k], span);
         EXPECT_GT(std::min(low, high), -kDeepestOverlap * a.radius)
             << where_ << ": body " << i << " goes through a wall of axis " << k << " within ("
             << static_cast<double>(from) << ", " << static_cast<double>(t) << ")";
@@ -337,14 +354,14 @@ class ReferenceRun {
   }
 
   void CheckWallCollision(const CollisionEvent& e, const ReferenceBody& new_body) {
-    EXPECT_EQ(scenario_.container.kind, Container::Kind::kWalledBox) << where_;
+    EXPECT_EQ(scenario_.kind, Container::Kind::kWalledBox) << where_;
     const Real t = e.time;
     const ReferenceBody& body = bodies_[e.a.index];
     ASSERT_TRUE(e.wall >= 0 && e.wall < 6) << where_;
     const int axis = e.wall / 2;
     const bool upper = e.wall % 2 == 1;
     const RealVec p = body.PositionAt(t), v = body.VelocityAt(t);
-    const Real gap = upper ? kSide - p[axis] - body.radius : p[axis] - body.radius;
+    const Real gap = upper ? scenario_.side - p[axis] - body.radius : p[axis] - body.radius;
     EXPECT_LT(std::abs(gap), kTouching * body.radius)
         << where_ << ": body " << e.a.index << " meets wall " << e.wall << " at " << e.time
         << " with a gap of " << static_cast<double>(gap);
@@ -384,31 +401,41 @@ class ReferenceRun {
 
 class ReferenceRuns : public ::testing::TestWithParam<Container::Kind> {};
 
+// Many small worlds: every feature, few bodies, the grid's outer layer (wrapped in a periodic
+// box) and its rebuilds.
 TEST_P(ReferenceRuns, NoCollisionMissedOrLateAndEveryResponseExact) {
   std::uint64_t collisions = 0;
   for (const Broadphase broadphase : {Broadphase::kAllPairs, Broadphase::kGrid}) {
     for (std::uint32_t seed = 1; seed <= 25 && !HasFailure(); ++seed) {
       Scenario scenario;
+      scenario.kind = GetParam();
       scenario.broadphase = broadphase;
       scenario.seed = seed;
-      const Vec3 lo = Vec3::Zero(), hi = Vec3::Constant(kSide);
-      switch (GetParam()) {
-        case Container::Kind::kOpen:
-          scenario.container = Container::Open();
-          break;
-        case Container::Kind::kWalledBox:
-          scenario.container = Container::WalledBox(lo, hi);
-          break;
-        case Container::Kind::kPeriodicBox:
-          scenario.container = Container::PeriodicBox(lo, hi);
-          break;
-      }
       collisions += ReferenceRun(scenario).Run();
     }
   }
   std::printf("collisions checked against the reference: %llu\n",
               static_cast<unsigned long long>(collisions));
   EXPECT_GT(collisions, GetParam() == Container::Kind::kOpen ? 200u : 1000u);
+}
+
+// A few larger worlds, on the grid in the boxes: cells away from the box's faces (the interior
+// paths, with fixed neighbour offsets) and more crossings per collision.
+TEST_P(ReferenceRuns, LargerWorldsNeitherMissNorDelay) {
+  std::uint64_t collisions = 0;
+  for (std::uint32_t seed = 101; seed <= 104 && !HasFailure(); ++seed) {
+    Scenario scenario;
+    scenario.kind = GetParam();
+    scenario.seed = seed;
+    scenario.side = 13.0;
+    scenario.first_bodies = 60;
+    scenario.steps = 20;
+    scenario.envelopes = false;
+    collisions += ReferenceRun(scenario).Run();
+  }
+  std::printf("collisions checked against the reference: %llu\n",
+              static_cast<unsigned long long>(collisions));
+  EXPECT_GT(collisions, 400u);
 }
 
 INSTANTIATE_TEST_SUITE_P(World, ReferenceRuns,
