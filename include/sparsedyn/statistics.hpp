@@ -18,6 +18,7 @@ struct Statistics {
   std::uint64_t wall_collisions = 0;      // body-wall impulses
   std::uint64_t early_events = 0;         // a meeting that was not yet touching: predicted again
   std::uint64_t collapse_guarded = 0;     // collisions made elastic by the collapse guard
+  std::uint64_t wall_holds = 0;           // spheres brought to rest by a wall (also wall collisions)
   std::uint64_t engagements_started = 0;
   std::uint64_t engagements_ended = 0;
   std::uint64_t predictions = 0;          // full predictions (actor against all its candidates)

@@ -198,6 +198,10 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
     acceleration_.assign(index, uniform_acceleration_);
   }
   if (own_accelerations_) acceleration_.push_back(acceleration);
+  if (!held_by_.empty()) {
+    held_by_.push_back(0);
+    free_acceleration_.push_back(acceleration);
+  }
   if (!started_) overlap_index_.Add(def.position, radius);
   const std::array<double, 4> material{radius, 1.0 / def.mass, def.restitution, def.friction};
   const auto [found, added] =
@@ -406,6 +410,7 @@ std::size_t World::Impl::MemoryBytes() const {
   // A std::map node holds its value and about four pointers.
   std::size_t bytes =
       starts_.capacity() * sizeof(ElementStart) + acceleration_.capacity() * sizeof(Vec3) +
+      held_by_.capacity() + free_acceleration_.capacity() * sizeof(Vec3) +
       materials_.capacity() * sizeof(Material) +
       material_index_.size() * (sizeof(std::array<double, 4>) + 40) +
       material_.capacity() * sizeof(std::uint32_t) + envelope_.capacity() * sizeof(Envelope) +

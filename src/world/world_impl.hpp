@@ -80,6 +80,16 @@ class World::Impl {
   std::vector<Vec3> acceleration_;          // per body once own_accelerations_
   Vec3 uniform_acceleration_ = Vec3::Zero();  // gravity: every body's, until one has a thrust
   bool own_accelerations_ = false;
+  // Spheres at rest against walls (docs/sparse-phase.md#coming-to-rest): bit w of held_by_[i]
+  // says that wall w holds body i, whose velocity and acceleration into the wall are then zero
+  // (acceleration_ is the held one); free_acceleration_ keeps gravity plus the body's thrust for
+  // its release. Both empty until the first hold.
+  std::vector<std::uint8_t> held_by_;
+  std::vector<Vec3> free_acceleration_;
+  Vec3 FreeAcceleration(std::uint32_t i) const {
+    if (!free_acceleration_.empty()) return free_acceleration_[i];
+    return own_accelerations_ ? acceleration_[i] : uniform_acceleration_;
+  }
   struct Material {                         // what bodies share: a gas has one
     double radius;
     double inv_mass;
@@ -287,6 +297,9 @@ class World::Impl {
   void HandleEngagement(std::uint32_t k);
   void Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, double gap);
   void SetVelocity(std::uint32_t i, const Vec3& v);
+  void ReportSegment(std::uint32_t i);
+  bool HoldAgainstWall(std::uint32_t i, int w, const Vec3& normal, const Vec3& v, double gap);
+  void SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v);
   bool TouchingAndApproaching(std::uint32_t i, std::uint32_t j, Vec3& normal, double& gap) const;
   void NotePenetration(double gap);
 

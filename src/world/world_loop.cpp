@@ -37,7 +37,8 @@ Status World::Impl::AdvanceTo(double t) {
         std::ostringstream message;
         message.precision(17);
         message << "event loop stalled: " << window_events << " events without time advancing"
-                << " past t = " << top.time << " (inelastic collapse or a stuck configuration; "
+                << " past t = " << top.time << " (inelastic collapse, bodies coming to rest on "
+                << "each other (only walls hold bodies at rest) or a stuck configuration; "
                 << "last event " << EventKindName(static_cast<int>(top.kind)) << " of "
                 << (engagement ? "engagement " : "body ")
                 << (engagement ? top.slot : public_of_[top.slot]) << ")";
@@ -192,11 +193,67 @@ void World::Impl::NotePenetration(double gap) {
 
 void World::Impl::SetVelocity(std::uint32_t i, const Vec3& v) {
   SetStart(i, PathStart{PositionNow(i), v, now_});
+  ReportSegment(i);
+}
+
+void World::Impl::ReportSegment(std::uint32_t i) {
   ++PredictionOf(i).version;
   if (on_segment_) {
-    on_segment_(
-        MotionSegment{now_, PublicId(i), starts_[i].p0, v, PathOf(i).a, PredictionOf(i).version});
+    const PathStart& s = starts_[i];
+    on_segment_(MotionSegment{now_, PublicId(i), s.p0, s.v0, PathOf(i).a, PredictionOf(i).version});
   }
+}
+
+void World::Impl::SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v) {
+  const Vec3 p = PositionNow(i);  // on the path so far
+  if (held_by_.empty()) {
+    // The first hold: every body gets its own acceleration, and its free one is kept.
+    if (!own_accelerations_) acceleration_.assign(starts_.size(), uniform_acceleration_);
+    own_accelerations_ = true;
+    free_acceleration_ = acceleration_;
+    held_by_.assign(starts_.size(), 0);
+  }
+  held_by_[i] = walls;
+  Vec3 a = free_acceleration_[i];
+  for (int w = 0; w < 6; ++w) {
+    if ((walls >> w & 1u) != 0) {
+      a[w / 2] = 0.0;  // the walls are axis-aligned: exact zeros, so the gap stays as it is
+      v[w / 2] = 0.0;
+    }
+  }
+  acceleration_[i] = a;
+  SetStart(i, PathStart{p, v, now_});
+  ReportSegment(i);
+}
+
+bool World::Impl::HoldAgainstWall(std::uint32_t i, int w, const Vec3& normal, const Vec3& v,
+                                  double gap) {
+  // Coming to rest: touching, moving to or from the wall slower than the collapse guard, and
+  // pressed into it by gravity or thrust. Bounces would follow ever faster (the guard keeps
+  // them elastic; below the time's resolution they would stall the clock), so the wall holds
+  // the body instead: its velocity and acceleration into the wall become zero (the normal
+  // force) until a collision with another body moves it.
+  if (gap > settings_.contact_tolerance * Radius(i)) return false;
+  const double approach = normal.dot(v);
+  if (!(std::abs(approach) < settings_.elastic_below_speed) ||
+      !(normal.dot(FreeAcceleration(i)) < 0.0)) {
+    return false;
+  }
+  const std::uint8_t walls = held_by_.empty() ? 0 : held_by_[i];
+  SetHeld(i, static_cast<std::uint8_t>(walls | 1u << w), v);
+  // A wall collision like any other (its segment comes with one), with the impulse that stops
+  // the body's approach.
+  NotePenetration(gap);
+  ++stats_.wall_holds;
+  ++stats_.wall_collisions;
+  if (on_collision_) {
+    on_collision_(CollisionEvent{now_, PublicId(i), BodyId{}, w,
+                                 PositionNow(i) - Radius(i) * normal, -normal,
+                                 std::max(-approach, 0.0) / InvMass(i)});
+  }
+  PredictFull(i);
+  PredictEngagementsOf(i);
+  return true;
 }
 
 void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, double gap) {
@@ -206,8 +263,15 @@ void World::Impl::Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, 
     const PhaseTimer timer(settings_.profile_phases, stats_.seconds_response);
     result = SphereImpulse(VelocityNow(i), VelocityNow(j), InvMass(i), InvMass(j), normal,
                            Restitution(i) * Restitution(j), settings_.elastic_below_speed);
-    SetVelocity(i, result.v_a);
-    SetVelocity(j, result.v_b);
+    if (held_by_.empty()) {
+      SetVelocity(i, result.v_a);
+      SetVelocity(j, result.v_b);
+    } else {
+      // A collision with another body ends a wall's hold (the wall takes it up again if the
+      // body is still at rest against it).
+      SetHeld(i, 0, result.v_a);
+      SetHeld(j, 0, result.v_b);
+    }
   }
   ++stats_.collisions;
   if (result.guarded) ++stats_.collapse_guarded;
@@ -242,6 +306,7 @@ void World::Impl::HandleWallMeet(std::uint32_t i) {
   const Vec3 v = PathOf(i).VelocityAt(now_);
   const double gap = plane.normal.dot(p) - plane.offset - Radius(i);
   const double approach = plane.normal.dot(v);
+  if (HoldAgainstWall(i, event.aux, plane.normal, v, gap)) return;
   if (gap > settings_.contact_tolerance * Radius(i) || approach >= 0) {
     if (gap > settings_.contact_tolerance * Radius(i)) ++stats_.early_events;
     PredictFull(i);

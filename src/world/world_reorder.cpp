@@ -66,6 +66,10 @@ void World::Impl::Reorder() {
   PermuteVector(prediction, old_of_new);
   PermuteVector(starts_, old_of_new);
   if (own_accelerations_) PermuteVector(acceleration_, old_of_new);
+  if (!held_by_.empty()) {
+    PermuteVector(held_by_, old_of_new);
+    PermuteVector(free_acceleration_, old_of_new);
+  }
   PermuteVector(material_, old_of_new);
   if (polyhedra_) {
     PermuteVector(shape_, old_of_new);
