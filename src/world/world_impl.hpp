@@ -298,6 +298,16 @@ class World::Impl {
   void Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, double gap);
   void SetVelocity(std::uint32_t i, const Vec3& v);
   void ReportSegment(std::uint32_t i);
+  // The event loop's progress over windows of stall_event_limit events: a clock that stands
+  // still (a stall) or crawls on collisions slower than the collapse guard ends AdvanceTo with
+  // an error, never a hang.
+  struct ProgressWindow {
+    std::uint64_t events;   // in this window so far
+    double start;           // the clock at its start
+    std::uint64_t guarded;  // Statistics::collapse_guarded at its start
+  };
+  Status CheckProgress(const QueueTop& top, bool engagement, ProgressWindow& window) const;
+  double MaxFreeAcceleration() const;
   bool HoldAgainstWall(std::uint32_t i, int w, const Vec3& normal, const Vec3& v, double gap);
   void SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v);
   bool TouchingAndApproaching(std::uint32_t i, std::uint32_t j, Vec3& normal, double& gap) const;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The event loop: a short dispatcher over event kinds and one handler per kind.
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "dynamics/sphere_collision.hpp"
@@ -18,8 +19,7 @@ constexpr double kStallProgress = 1e-12;
 Status World::Impl::AdvanceTo(double t) {
   if (!std::isfinite(t)) return Error{"AdvanceTo: time must be finite"};
   if (!started_) Start();
-  std::uint64_t window_events = 0;
-  double window_start = now_;
+  ProgressWindow window{0, now_, stats_.collapse_guarded};
   while (true) {
     const bool has_element = !queue_.Empty();
     const bool has_engagement = !engagement_queue_.Empty();
@@ -32,20 +32,8 @@ Status World::Impl::AdvanceTo(double t) {
     const QueueTop top = engagement ? engagement_queue_.Top() : queue_.Top();
     if (top.time > t) break;
 
-    if (++window_events >= settings_.stall_event_limit) {
-      if (top.time - window_start <= kStallProgress * std::max(1.0, std::abs(top.time))) {
-        std::ostringstream message;
-        message.precision(17);
-        message << "event loop stalled: " << window_events << " events without time advancing"
-                << " past t = " << top.time << " (inelastic collapse, bodies coming to rest on "
-                << "each other (only walls hold bodies at rest) or a stuck configuration; "
-                << "last event " << EventKindName(static_cast<int>(top.kind)) << " of "
-                << (engagement ? "engagement " : "body ")
-                << (engagement ? top.slot : public_of_[top.slot]) << ")";
-        return Error{message.str()};
-      }
-      window_events = 0;
-      window_start = top.time;
+    if (++window.events >= settings_.stall_event_limit) {
+      if (Status progress = CheckProgress(top, engagement, window); !progress) return progress;
     }
     now_ = top.time;
     Dispatch(top, engagement);
@@ -54,6 +42,57 @@ Status World::Impl::AdvanceTo(double t) {
   }
   now_ = std::max(now_, t);
   return Status::Ok();
+}
+
+Status World::Impl::CheckProgress(const QueueTop& top, bool engagement,
+                                  ProgressWindow& window) const {
+  const auto last_event = [&] {
+    std::ostringstream out;
+    out << "last event " << EventKindName(static_cast<int>(top.kind)) << " of "
+        << (engagement ? "engagement " : "body ") << (engagement ? top.slot : public_of_[top.slot]);
+    return out.str();
+  };
+  std::ostringstream message;
+  message.precision(17);
+  // A stall: the clock stands still.
+  if (top.time - window.start <= kStallProgress * std::max(1.0, std::abs(top.time))) {
+    message << "event loop stalled: " << window.events << " events without time advancing"
+            << " past t = " << top.time << " (inelastic collapse, bodies coming to rest on "
+            << "each other (only walls hold bodies at rest) or a stuck configuration; "
+            << last_event() << ")";
+    return Error{message.str()};
+  }
+  // A crawl: the clock moves, but nearly every event is a collision slower than the collapse
+  // guard, and faster than even every body bouncing at that speed under the largest
+  // acceleration could make them (one every 2 v / a per body): bodies at rest that no wall
+  // holds, rocking and bouncing on it ever faster (a polyhedron on the floor, a pile).
+  const std::uint64_t guarded = stats_.collapse_guarded - window.guarded;
+  const double most = MaxFreeAcceleration();
+  if (10 * guarded >= 9 * window.events && most > 0.0) {
+    const double bounce = 2.0 * settings_.elastic_below_speed / most;
+    const double elapsed = top.time - window.start;
+    if (elapsed < static_cast<double>(window.events) * bounce /
+                      static_cast<double>(std::max<std::size_t>(starts_.size(), 1))) {
+      message << "event loop crawling: " << guarded << " of the last " << window.events
+              << " events were collisions slower than elastic_below_speed (" << std::setprecision(6)
+              << settings_.elastic_below_speed << std::setprecision(17)
+              << " m/s) while the clock moved from t = " << window.start << " to " << top.time
+              << " (bodies coming to rest that no wall "
+              << "holds: resting contact of polyhedra, and of bodies on each other, is not "
+              << "supported; " << last_event() << ")";
+      return Error{message.str()};
+    }
+  }
+  window = ProgressWindow{0, top.time, stats_.collapse_guarded};
+  return Status::Ok();
+}
+
+double World::Impl::MaxFreeAcceleration() const {
+  if (!own_accelerations_) return uniform_acceleration_.norm();
+  double most = 0.0;
+  for (std::uint32_t i = 0; i < starts_.size(); ++i)
+    most = std::max(most, FreeAcceleration(i).norm());
+  return most;
 }
 
 void World::Impl::FetchElement(std::uint32_t e) const {
