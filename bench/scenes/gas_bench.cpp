@@ -117,6 +117,60 @@ void BM_GasCells(benchmark::State& state) {
          static_cast<double>(state.range(2)) / 10.0);
 }
 
+// Curved paths: the gas (N = 1000, packing 0.05) with a thrust of 0.1 in a random direction
+// on every body, so that every pair's meeting is a quartic, on the Grid (kind 0) or AllPairs
+// (1, the 27 periodic images of every body); or (2) every body with a growing envelope
+// (e1 = 0.01), which takes the World to AllPairs. Timed from the start over 2 collisions per
+// particle; pairs_skipped/test is the share of pair tests that the distance bound settled.
+void BM_CurvedGas(benchmark::State& state) {
+  const auto n = static_cast<std::uint32_t>(state.range(0));
+  const int kind = static_cast<int>(state.range(1));
+  scenes::GasOptions options;
+  options.n = n;
+  Result<std::vector<BodyDef>> bodies = scenes::MakeGasBodies(options);
+  if (!bodies) {
+    state.SkipWithError(bodies.error().message.c_str());
+    return;
+  }
+  std::uint64_t state_bits = 0x9e3779b97f4a7c15ull;
+  const auto uniform = [&state_bits] {  // splitmix64: a fixed sequence on every platform
+    std::uint64_t z = (state_bits += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1p-53 * 2 - 1;
+  };
+  for (BodyDef& body : *bodies) {
+    if (kind == 2) {
+      body.envelope.e1 = 0.01;
+    } else {
+      Vec3 direction(uniform(), uniform(), uniform());
+      body.thrust = 0.1 * direction.normalized();
+    }
+  }
+  WorldSettings settings;
+  const double side = scenes::GasBoxSide(options);
+  settings.container = Container::PeriodicBox(Vec3::Zero(), Vec3::Constant(side));
+  settings.broadphase = kind == 0 ? Broadphase::kGrid : Broadphase::kAllPairs;
+  double collisions = 0, cpu_seconds = 0, tests = 0, skipped = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    World world(settings);
+    for (const BodyDef& body : *bodies) {
+      if (!world.AddBody(body)) state.SkipWithError("a body was refused");
+    }
+    state.ResumeTiming();
+    const std::clock_t cpu_start = std::clock();
+    if (!world.AdvanceTo(2.0 / CollisionRate(options.packing))) state.SkipWithError("stalled");
+    cpu_seconds += static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    collisions += static_cast<double>(world.Stats().collisions);
+    tests += static_cast<double>(world.Stats().pair_tests);
+    skipped += static_cast<double>(world.Stats().pairs_skipped);
+  }
+  state.counters["collisions/cpu_s"] = collisions / cpu_seconds;
+  state.counters["pair_tests/collision"] = tests / collisions;
+  state.counters["pairs_skipped/test"] = skipped / tests;
+}
+
 void GasArguments(benchmark::internal::Benchmark* b) {
   for (const int packing : {5, 10, 30}) {
     for (const int n : {1000, 10000, 100000, 1000000}) {
@@ -135,6 +189,11 @@ BENCHMARK(BM_Gas)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+BENCHMARK(BM_CurvedGas)
+    ->ArgsProduct({{1000}, {0, 1, 2}})
+    ->ArgNames({"n", "grid0_allpairs1_envelope2"})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GasCells)
     ->ArgsProduct({{10000, 100000}, {5, 30}, {5, 10, 20, 40, 60, 80, 120, 160}})
     ->ArgNames({"n", "packing%", "cells_per_body_x10"})

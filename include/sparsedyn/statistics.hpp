@@ -24,6 +24,7 @@ struct Statistics {
   std::uint64_t predictions = 0;          // full predictions (actor against all its candidates)
   std::uint64_t partial_predictions = 0;  // after a cell crossing: against the new cells only
   std::uint64_t pair_tests = 0;           // element pairs whose meeting time was computed
+  std::uint64_t pairs_skipped = 0;        // of those, settled by a distance bound without a root
   // The detailed phase (polyhedra, §5.2): contact predictions of engaged pairs and of bodies
   // near walls, the zone events / advancement steps they took, and the predictions that hit
   // their work cap and resumed later (checkpoints).

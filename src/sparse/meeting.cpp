@@ -172,7 +172,7 @@ double PredictMeeting(const Mover& a, const Mover& b, const Vec3& shift_b, doubl
   const double r0 = a.r0 + b.r0;
   const double r1 = a.r1 + b.r1;
   const double r2 = a.r2 + b.r2;
-  if (da.isZero(0.0) && r1 == 0.0 && r2 == 0.0) {
+  if (OnStraightLines(a, b)) {
     return PredictLinearMeeting(a.p, a.v, b.p, b.v, shift_b, r0, horizon);
   }
   const double dt = EarliestEntry(GapPolynomial(dp, dv, da, r0, r1, r2), horizon);
@@ -183,6 +183,27 @@ double PredictMeeting(const Mover& a, const Mover& b, const Vec3& shift_b, doubl
   return CertifyNotLate(dt, [&gap](long double t, long double& g, long double& dg, long double& e) {
     gap.Evaluate(t, g, dg, e);
   });
+}
+
+bool CertainlyApartWithin(const Mover& a, const Mover& b, const Vec3& shift_b, double h) {
+  if (!(h >= 0) || h == kInfinity) return false;
+  const Vec3 dp = b.p + shift_b - a.p;
+  const Vec3 dv = b.v - a.v;
+  const Vec3 da = b.a - a.a;
+  // The radii's growth over [0, h] is at most r1+ h + r2+ h^2 / 2, the distance's shrinking
+  // at most |dv| h + |da| h^2 / 2 (overall, or along one axis with its components).
+  const double grow = std::max(a.r1 + b.r1, 0.0) * h + 0.5 * std::max(a.r2 + b.r2, 0.0) * h * h;
+  const double reach = a.r0 + b.r0 + grow;
+  const double size = (a.p.cwiseAbs() + b.p.cwiseAbs() + shift_b.cwiseAbs()).sum() + reach;
+  const auto apart = [&](double distance, double speed, double acceleration) {
+    const double closing = speed * h + 0.5 * acceleration * h * h;
+    return distance - reach - closing > 1e-6 * (size + closing);
+  };
+  if (apart(dp.norm(), dv.norm(), da.norm())) return true;
+  for (int k = 0; k < 3; ++k) {
+    if (apart(std::abs(dp[k]), std::abs(dv[k]), std::abs(da[k]))) return true;
+  }
+  return false;
 }
 
 // CertifyLinearMeeting in doubles, for the pairs whose gap is clearly closing at the root dt (all

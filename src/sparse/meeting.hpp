@@ -20,6 +20,20 @@ inline constexpr double kPredictionHorizon = 1e30;
 double PredictMeeting(const Mover& a, const Mover& b, const Vec3& shift_b,
                       double horizon = kPredictionHorizon);
 
+/// Whether the gap of `a` and `b` is the straight-line quadratic (no relative acceleration, no
+/// envelope growth), which PredictMeeting solves in closed form; else a quartic.
+inline bool OnStraightLines(const Mover& a, const Mover& b) {
+  return (b.a - a.a).isZero(0.0) && a.r1 + b.r1 == 0.0 && a.r2 + b.r2 == 0.0;
+}
+
+/// Whether the spheres of `a` and `b` (b displaced by `shift_b`) certainly stay apart for every
+/// dt in [0, h]: their distance, overall and along each axis, is more than their paths and
+/// radii can close in that time (|dv| h + |da| h^2 / 2 and the growth r1 h + r2 h^2 / 2, each
+/// term at most its positive part). A few flops, for skipping PredictMeeting's root isolation
+/// for pairs whose meeting, if any, comes after an event already found. False when it cannot
+/// tell; the margin, a millionth of the sizes involved, dwarfs the rounding of these sums.
+bool CertainlyApartWithin(const Mover& a, const Mover& b, const Vec3& shift_b, double h);
+
 /// Moves a double-precision meeting time `dt` > 0 of two spheres on straight lines back until
 /// it is certainly not late (the gap is open and closing there): CertifyLinearInDoubles, or
 /// for the pairs it leaves, the gap evaluated in long double with an error bound at steps back.

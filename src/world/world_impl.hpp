@@ -183,6 +183,9 @@ class World::Impl {
   bool started_ = false;
   bool has_envelopes_ = false;
   bool straight_lines_ = false;  // no envelopes and no acceleration: the fast meeting test
+  // While a scan runs: the time after which no meeting can become the actor's event (its next
+  // wrap in a periodic AllPairs box), else infinity. ConsiderMeeting skips pairs apart so long.
+  double scan_limit_ = kInfinity;
   // Whether every element is a sphere without an envelope on a straight line (straight_lines_
   // as Start sets it; the fast scan also skips the engaged-pair check).
   bool StraightLines() const {
@@ -237,6 +240,7 @@ class World::Impl {
   template <typename Scan>
   void PredictWith(std::uint32_t i, Candidate best, const Grid::Place* place, Scan&& scan);
   void ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift, Candidate& best);
+  double WrapTime(std::uint32_t i) const;  // AllPairs: i's next wrap in a periodic box
   void Offer(Candidate& best, double t, std::uint32_t j) const;  // keeps the earlier meeting
   // ScanNeighbors' rare step, out of the cell walk: certifies a root of LinearMeetingRoot.
   [[gnu::noinline]] void OfferLinearMeeting(const PathStart& pi, std::uint32_t j, const Vec3& shift,

@@ -26,8 +26,29 @@ void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& 
   // elements: their spheres may have met and separated since, on unchanged paths, and that past
   // meeting must not come back as one now.
   const double reference = EngagesOnMeet() ? now_ : std::max(starts_[i].t0, starts_[j].t0);
-  const double dt = PredictMeeting(MoverOf(i, reference), MoverOf(j, reference), shift);
+  const Mover a = MoverOf(i, reference), b = MoverOf(j, reference);
+  // A pair on curved paths or with envelopes costs a root isolation (microseconds). A meeting
+  // after the earliest event found so far (or after the scan's limit) cannot become i's event:
+  // skip the pairs whose distance keeps them apart that long. The limit is widened by a few
+  // ulps so that the meetings skipped are certainly later (ties with it still count).
+  const double limit = MinOf(best.time, scan_limit_);
+  if (limit != kInfinity && !OnStraightLines(a, b)) {
+    const double h = (limit - reference) * (1 + 0x1p-40) + 0x1p-50 * std::abs(limit);
+    if (CertainlyApartWithin(a, b, shift, h)) {
+      ++stats_.pairs_skipped;
+      return;
+    }
+  }
+  const double dt = PredictMeeting(a, b, shift);
   if (dt != kInfinity) Offer(best, std::max(now_, EventTime(reference, dt)), j);
+}
+
+double World::Impl::WrapTime(std::uint32_t i) const {
+  // As FinishPrediction predicts the crossing (from the segment start, never before now).
+  const double t0 = starts_[i].t0;
+  int axis = 0, direction = 1;
+  const double dt = all_pairs_->PredictCrossing(BodyMoverOf(i, t0), 0, now_ - t0, axis, direction);
+  return MaxOf(now_, EventTime(t0, dt));
 }
 
 void World::Impl::Offer(Candidate& best, double t, std::uint32_t j) const {
@@ -288,9 +309,13 @@ void World::Impl::PredictWith(std::uint32_t i, Candidate best, const Grid::Place
 void World::Impl::PredictFull(std::uint32_t i) {
   ++stats_.predictions;
   if (!grid_) {
+    // A meeting after i's next wrap in a periodic box is never its event: the wrap predicts
+    // again in full. (A Grid keeps the meeting across its crossings: no such limit there.)
+    scan_limit_ = WrapTime(i);
     PredictWith(i, Candidate{}, nullptr, [&](Candidate& best) {
       ScanNeighbors(i, best, [&](auto&& fn) { all_pairs_->ForEachNeighbor(i, fn); });
     });
+    scan_limit_ = kInfinity;
     return;
   }
   const Grid::Place place = grid_->PlaceOf(i);

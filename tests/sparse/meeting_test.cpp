@@ -179,5 +179,59 @@ void CheckRandomPairs(int pairs, std::uint64_t seed) {
 
 TEST(MeetingTime, AgreesWithDenseSamplingOnRandomPairs) { CheckRandomPairs(10000, 20261122); }
 
+// The distance bound that lets a scan skip a pair: whenever it says "apart within h", the oracle
+// finds no meeting in [0, h]; and it does say so for many pairs (else it would skip nothing).
+TEST(CertainlyApart, NeverClaimsAPairThatMeetsWithinTheTime) {
+  scenes::Random random(20261128);
+  int apart = 0, meet_within = 0, wrong = 0;
+  constexpr int kPairs = 4000;
+  for (int trial = 0; trial < kPairs; ++trial) {
+    const int kind = trial % 4;  // linear, accelerated, envelope, accelerated + envelope
+    auto [a, b] = testing::RandomMoverPair(random, kind == 1 || kind == 3, kind >= 2);
+    if (testing::OracleGap(a, b, 0) <= 0) continue;
+    // Shrinking envelopes too: the bound must take only the growth.
+    if (trial % 8 == 6) b.r1 = -0.5 * b.r1;
+    const double h = random.Uniform(0.0, 4.0);
+    SCOPED_TRACE(::testing::Message() << "trial " << trial << " h " << h);
+    const std::optional<long double> truth = testing::OracleMeeting(a, b, h);
+    meet_within += truth ? 1 : 0;
+    if (!CertainlyApartWithin(a, b, Vec3::Zero(), h)) continue;
+    ++apart;
+    if (truth) ++wrong;
+    // The prediction, when finite, is later than h as well.
+    const double dt = PredictMeeting(a, b, Vec3::Zero());
+    EXPECT_GT(dt, h);
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(apart, kPairs / 10);
+  EXPECT_GT(meet_within, kPairs / 10);
+}
+
+// Head-on at closing speed 2 from a gap of 3 (contact at dt = 1.5): apart within a time just
+// short of the contact, not within the contact time itself; the axis bound alone settles a pair
+// offset along z that the overall distance would not.
+TEST(CertainlyApart, IsTightForAHeadOnPairAndUsesEachAxis) {
+  const Mover a = Sphere(Vec3(0, 0, 0), Vec3(1, 0, 0), 0.5);
+  const Mover b = Sphere(Vec3(4, 0, 0), Vec3(-1, 0, 0), 0.5);
+  EXPECT_TRUE(CertainlyApartWithin(a, b, Vec3::Zero(), 1.5 * (1 - 1e-4)));
+  EXPECT_FALSE(CertainlyApartWithin(a, b, Vec3::Zero(), 1.5));
+  EXPECT_FALSE(CertainlyApartWithin(a, b, Vec3::Zero(), 1.5 * (1 - 1e-9)));  // within the margin
+  // Growing envelopes close the gap sooner: r1 = 1 each (reach 1 + 2 dt) meets at dt = 0.75.
+  Mover ga = a, gb = b;
+  ga.r1 = gb.r1 = 1.0;
+  EXPECT_FALSE(CertainlyApartWithin(ga, gb, Vec3::Zero(), 0.8));
+  EXPECT_TRUE(CertainlyApartWithin(ga, gb, Vec3::Zero(), 0.7));
+  // b far along z, moving fast along x only: the distance closes at speed 10 overall, but the
+  // z separation of 5 (less the reach 1) never closes.
+  const Mover c = Sphere(Vec3(0, 0, 0), Vec3::Zero(), 0.5);
+  const Mover d = Sphere(Vec3(-1, 0, 5), Vec3(10, 0, 0), 0.5);
+  EXPECT_TRUE(CertainlyApartWithin(c, d, Vec3::Zero(), 100.0));
+  // The periodic image shift counts: the image below is within reach at once.
+  EXPECT_FALSE(CertainlyApartWithin(c, d, Vec3(1, 0, -5), 0.01));
+  // No time, no verdict beyond the start; infinity or NaN: no verdict.
+  EXPECT_FALSE(CertainlyApartWithin(c, d, Vec3::Zero(), kInfinity));
+  EXPECT_FALSE(CertainlyApartWithin(c, d, Vec3::Zero(), std::nan("")));
+}
+
 }  // namespace
 }  // namespace sparsedyn
