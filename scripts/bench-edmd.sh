@@ -10,8 +10,13 @@
 # interval (a small fraction of the stretch); each printed line is stamped with EDMD's CPU time
 # (/proc/PID/schedstat), and its rate is that of the lines printed while the turns ran.
 # Prints each round's collisions per CPU s, the ratio, and the medians.
+# Each switch costs the process that resumes its caches, EDMD more than gas_bench: with 30
+# slices EDMD ran 12% below its rate alone at 10^4, ours 3% (docs/benchmarks.md, "Turns cost
+# EDMD more"); hence 6 slices by default, and --alone, where each runs its whole stretch alone
+# on the core, one after the other (order alternating by round): no switch, but each in its own
+# seconds of the machine.
 #   scripts/bench-edmd.sh EDMD_DIR [--rounds R] [--sizes "10000 100000 1000000"] [--core C]
-#                                  [--slices K]
+#                                  [--slices K] [--alone]
 # EDMD is not part of this project: EDMD_DIR is a checkout of
 # https://github.com/FSmallenburg/EDMD (MIT licence; the measurements in docs/ used commit
 # 65a9972). Only its documented parameters are set, with sed, in a copy: the globals at the top
@@ -21,15 +26,21 @@
 # Environment: JOBS (build parallelism, default 2).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-usage="usage: $0 EDMD_DIR [--rounds R] [--sizes \"N ...\"] [--core C] [--slices K]"
+usage="usage: $0 EDMD_DIR [--rounds R] [--sizes \"N ...\"] [--core C] [--slices K] [--alone]"
 (($# >= 1)) || { echo "$usage" >&2; exit 2; }
 edmd=$(cd "$1" 2>/dev/null && pwd) || { echo "$0: no directory $1" >&2; exit 2; }
 shift
 rounds=5
 sizes="10000 100000 1000000"
 core=1
-slices=30
+slices=6
+alone=0
 while (($# > 0)); do
+  if [[ $1 == --alone ]]; then
+    alone=1
+    shift
+    continue
+  fi
   (($# >= 2)) || { echo "$usage" >&2; exit 2; }
   case "$1" in
     --rounds) rounds=$2 ;;
@@ -117,6 +128,15 @@ edmd_time() {  # log
   sed -n 's/.*Simtime: \([0-9.]*\),.*/\1/p' "$1" | tail -n 1 | awk '{ v = $1 } END { print (NR ? v : -1) }'
 }
 
+# --alone: lets the stopped EDMD run alone for `seconds`; sets edmd_begin and edmd_end.
+run_edmd_for() {  # pid seconds
+  edmd_begin=$EPOCHREALTIME
+  kill -CONT "$1"
+  sleep "$2"
+  kill -STOP "$1"
+  edmd_end=$EPOCHREALTIME
+}
+
 # One round: EDMD and gas_bench set up and settle side by side; then gas_bench's slices and
 # EDMD's alternate (gas_bench first in odd rounds). Sets r_edmd and r_ours, collisions per CPU s.
 round() {  # n dir edmd_binary stretch slice_seconds ours_first t_eq
@@ -136,32 +156,48 @@ round() {  # n dir edmd_binary stretch slice_seconds ours_first t_eq
     sleep 0.05
   done
   kill -STOP "$edmd_pid"
-  SPARSEDYN_GAS_STRETCH=$stretch SPARSEDYN_GAS_TURNS="$work/pipe_ours,$work/pipe_edmd,$work/ready,$slices" \
-    taskset -c "$core" "$build/bench/gas_bench" \
-    --benchmark_filter="^BM_Gas/n:$n/packing%:5/allpairs0_grid1:1/" --benchmark_format=json \
-    >"$work/ours.json" 2>/dev/null &
-  local ours_pid=$!
-  pids+=("$ours_pid")
-  while [[ ! -e $work/ready ]]; do
-    kill -0 "$ours_pid" 2>/dev/null || { echo "$0: gas_bench ended before its turns" >&2; return 1; }
-    sleep 0.05
-  done
-  exec 3<>"$work/pipe_edmd" 4<>"$work/pipe_ours"
-  local begin token
-  begin=$EPOCHREALTIME
-  if ((ours_first)); then printf t >&4; else printf t >&3; fi
-  # EDMD's turns, until gas_bench's last slice has passed the turn and it has ended.
-  while kill -0 "$ours_pid" 2>/dev/null; do
-    if read -r -n 1 -t 0.5 token <&3; then
-      kill -CONT "$edmd_pid" 2>/dev/null || true
-      sleep "$slice"
-      kill -STOP "$edmd_pid" 2>/dev/null || true
-      printf t >&4
-    fi
-  done
-  local end=$EPOCHREALTIME
-  exec 3>&- 4>&-
-  wait "$ours_pid" || true
+  local begin end
+  if ((alone)); then
+    # gas_bench's whole stretch, then EDMD for as long (or the other way round: EDMD's run
+    # first lasts the script's estimate of gas_bench's stretch).
+    local seconds
+    seconds=$(awk -v s="$slice" -v k="$slices" 'BEGIN { printf "%.3f", s * k }')
+    if ((!ours_first)); then run_edmd_for "$edmd_pid" "$seconds"; fi
+    local ours_begin=$EPOCHREALTIME
+    SPARSEDYN_GAS_STRETCH=$stretch taskset -c "$core" "$build/bench/gas_bench" \
+      --benchmark_filter="^BM_Gas/n:$n/packing%:5/allpairs0_grid1:1/" --benchmark_format=json \
+      >"$work/ours.json" 2>/dev/null || { echo "$0: gas_bench failed" >&2; return 1; }
+    seconds=$(awk -v a="$ours_begin" -v b="$EPOCHREALTIME" -v s="$seconds" \
+      'BEGIN { t = (b - a) * 0.8; printf "%.3f", (t > s ? t : s) }')
+    if ((ours_first)); then run_edmd_for "$edmd_pid" "$seconds"; fi
+  else
+    SPARSEDYN_GAS_STRETCH=$stretch SPARSEDYN_GAS_TURNS="$work/pipe_ours,$work/pipe_edmd,$work/ready,$slices" \
+      taskset -c "$core" "$build/bench/gas_bench" \
+      --benchmark_filter="^BM_Gas/n:$n/packing%:5/allpairs0_grid1:1/" --benchmark_format=json \
+      >"$work/ours.json" 2>/dev/null &
+    local ours_pid=$!
+    pids+=("$ours_pid")
+    while [[ ! -e $work/ready ]]; do
+      kill -0 "$ours_pid" 2>/dev/null || { echo "$0: gas_bench ended before its turns" >&2; return 1; }
+      sleep 0.05
+    done
+    exec 3<>"$work/pipe_edmd" 4<>"$work/pipe_ours"
+    local token
+    begin=$EPOCHREALTIME
+    if ((ours_first)); then printf t >&4; else printf t >&3; fi
+    # EDMD's turns, until gas_bench's last slice has passed the turn and it has ended.
+    while kill -0 "$ours_pid" 2>/dev/null; do
+      if read -r -n 1 -t 0.5 token <&3; then
+        kill -CONT "$edmd_pid" 2>/dev/null || true
+        sleep "$slice"
+        kill -STOP "$edmd_pid" 2>/dev/null || true
+        printf t >&4
+      fi
+    done
+    end=$EPOCHREALTIME
+    exec 3>&- 4>&-
+    wait "$ours_pid" || true
+  fi
   # EDMD must have outlasted the turns (ended, it is a zombie until waited for).
   local state
   state=$(awk '{ print $3 }' "/proc/$edmd_pid/stat" 2>/dev/null || echo gone)
@@ -174,6 +210,7 @@ round() {  # n dir edmd_binary stretch slice_seconds ours_first t_eq
   r_ours=$(awk -F': ' '/"collisions\/cpu_s"/ { gsub(/[ ,]/, "", $2); print $2 }' "$work/ours.json")
   [[ -n $r_ours ]] || { echo "$0: gas_bench reported no rate for N = $n" >&2; return 1; }
   # EDMD's rate between its first and last lines stamped while the turns ran.
+  if ((alone)); then begin=$edmd_begin end=$edmd_end; fi
   r_edmd=$(awk -v b="$begin" -v e="$end" '
     $1 >= b && $1 <= e && match($0, /Collisions: [0-9]+/) {
       c = substr($0, RSTART + 12, RLENGTH - 12) + 0
@@ -188,7 +225,11 @@ round() {  # n dir edmd_binary stretch slice_seconds ours_first t_eq
 
 median() { sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 
-echo "core $core, $slices turns each; collisions per CPU s"
+if ((alone)); then
+  echo "core $core, each alone in turn; collisions per CPU s"
+else
+  echo "core $core, $slices turns each; collisions per CPU s"
+fi
 printf '%-8s %-6s %12s %12s %10s %6s\n' N round EDMD ours ours/EDMD lines
 for n in $sizes; do
   # gas_bench's stretch: 2 x 10^6 collisions (at least 2 per particle), as in bench-ab.sh.
