@@ -15,6 +15,7 @@
 
 #include "bench/support/turns.hpp"
 #include "scenes/gas.hpp"
+#include "scenes/random.hpp"
 
 namespace sparsedyn {
 namespace {
@@ -132,18 +133,13 @@ void BM_CurvedGas(benchmark::State& state) {
     state.SkipWithError(bodies.error().message.c_str());
     return;
   }
-  std::uint64_t state_bits = 0x9e3779b97f4a7c15ull;
-  const auto uniform = [&state_bits] {  // splitmix64: a fixed sequence on every platform
-    std::uint64_t z = (state_bits += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1p-53 * 2 - 1;
-  };
+  scenes::Random random(options.seed);
   for (BodyDef& body : *bodies) {
     if (kind == 2) {
       body.envelope.e1 = 0.01;
     } else {
-      Vec3 direction(uniform(), uniform(), uniform());
+      // Three normals: a direction uniform on the sphere.
+      const Vec3 direction(random.Normal(), random.Normal(), random.Normal());
       body.thrust = 0.1 * direction.normalized();
     }
   }
