@@ -98,6 +98,15 @@ class BasicCalendarQueue {
     }
   }
 
+  /// Has every refill fetch, for each slot whose entry it moves into the current bucket, that
+  /// slot's record in an array of the owner's (record s at byte s << stride_shift from `first`;
+  /// null: none), an event or two before the slot's event is handled. The owner calls this
+  /// again whenever the array moves. Fetches only: any address is harmless.
+  void FetchWithRefills(const void* first, unsigned stride_shift) {
+    companion_ = static_cast<const char*>(first);
+    companion_shift_ = stride_shift;
+  }
+
   /// Fetches the head of the bucket an entry at `time` would join into the caches, ahead of a
   /// Set (nothing for the current bucket or beyond the year).
   void PrefetchListOf(double time) const {
@@ -379,6 +388,8 @@ class BasicCalendarQueue {
   double last_pop_time_ = 0.0;
   std::uint64_t rebuilds_ = 0;
   bool prefetch_ = false;  // the slot array outgrew the caches: Refill fetches ahead
+  const char* companion_ = nullptr;  // FetchWithRefills' array
+  unsigned companion_shift_ = 0;
 };
 
 /// The plain queue: slots and times, no payload.

@@ -233,7 +233,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
       Start();
     } else {
       const auto i = static_cast<std::uint32_t>(index);
-      ShareGridLinks();  // starts_ may have moved
+      ShareStarts();  // starts_ may have moved
       if (grid_) grid_->Insert(i, def.position);
       if (all_pairs_) all_pairs_->Insert(i, def.position);
       SetReorderPeriod();
@@ -291,8 +291,8 @@ void World::Impl::Start() {
     config.target_cell_size =
         std::cbrt(volume / (std::max(settings_.grid_cells_per_body, 1e-6) * n));
     if (Grid::Feasible(config)) grid_.emplace(config, n);
-    ShareGridLinks();
   }
+  ShareStarts();
   if (!grid_) {
     AllPairs::Config config;
     config.lo = box.lo;

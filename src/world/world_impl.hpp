@@ -71,11 +71,14 @@ class World::Impl {
   void SetStart(std::uint32_t i, const PathStart& start) {
     static_cast<PathStart&>(starts_[i]) = start;
   }
-  // Hands the grid the links in starts_ (again after starts_ moved).
-  void ShareGridLinks() {
-    if (grid_ && !starts_.empty()) {
+  // Hands the grid the links in starts_, and the queue the records its refills fetch (again
+  // after starts_ moved).
+  void ShareStarts() {
+    if (starts_.empty()) return;
+    if (grid_) {
       grid_->UseLinks(&starts_.data()->links, StrideShiftOf<ElementStart>(), starts_.size());
     }
+    queue_.FetchWithRefills(starts_.data(), StrideShiftOf<ElementStart>());
   }
   std::vector<Vec3> acceleration_;          // per body once own_accelerations_
   Vec3 uniform_acceleration_ = Vec3::Zero();  // gravity: every body's, until one has a thrust

@@ -83,7 +83,7 @@ void World::Impl::Reorder() {
     std::uint32_t& target = prediction[e].target;
     if (target != kNoIndex) target = new_of_old[target];
   }
-  ShareGridLinks();  // the records moved, their links with them
+  ShareStarts();  // the records moved, their links with them
   grid_->Permute(old_of_new);
   engagements_.Renumber(new_of_old);
   // The queue is keyed by element: refill it (its tie-break by slot now follows the new order,
