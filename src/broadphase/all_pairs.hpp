@@ -27,6 +27,19 @@ class AllPairs {
   AllPairs(const Config& config, std::uint32_t element_capacity)
       : lo_(config.lo), hi_(config.hi), periodic_(config.periodic) {
     present_.reserve(element_capacity);
+    const Vec3 length = hi_ - lo_;
+    shifts_.reserve(periodic_ ? 27 : 1);
+    if (!periodic_) {
+      shifts_.push_back(Vec3::Zero());
+      return;
+    }
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          shifts_.emplace_back(dx * length[0], dy * length[1], dz * length[2]);
+        }
+      }
+    }
   }
 
   void Insert(std::uint32_t e, const Vec3& /*p*/) {
@@ -62,27 +75,44 @@ class AllPairs {
     return shift;
   }
 
+  /// Calls fn(j, shift_j) for every element j != e and each of its images (ImageShifts()).
   template <typename Fn>
   void ForEachNeighbor(std::uint32_t e, Fn&& fn) const {
-    const Vec3 length = hi_ - lo_;
     for (const std::uint32_t j : members_) {
       if (j == e) continue;
-      if (!periodic_) {
-        fn(j, Vec3::Zero());
-        continue;
-      }
-      for (int dz = -1; dz <= 1; ++dz) {
-        for (int dy = -1; dy <= 1; ++dy) {
-          for (int dx = -1; dx <= 1; ++dx) {
-            fn(j, Vec3(dx * length[0], dy * length[1], dz * length[2]));
-          }
-        }
-      }
+      for (const Vec3& shift : shifts_) fn(j, shift);
     }
+  }
+  /// Calls fn(j) for every element j != e: ForEachNeighbor with the images left to the caller.
+  template <typename Fn>
+  void ForEachOther(std::uint32_t e, Fn&& fn) const {
+    for (const std::uint32_t j : members_) {
+      if (j != e) fn(j);
+    }
+  }
+  /// The offsets of the images every neighbour is seen at: the 27 of a periodic box (x fastest,
+  /// from -1 to +1 box lengths), else zero alone.
+  const std::vector<Vec3>& ImageShifts() const { return shifts_; }
+  /// The largest magnitude of ImageShifts() per axis: the box's lengths if periodic, else 0.
+  Vec3 LargestShift() const { return periodic_ ? Vec3(hi_ - lo_) : Vec3::Zero(); }
+  /// The index in ImageShifts() of the image nearest along every axis to an element at offset
+  /// `d` from the one looking (both in the box, so |d_k| < one length).
+  std::size_t NearestImage(const Vec3& d) const {
+    if (!periodic_) return 0;
+    std::size_t index = 0;
+    std::size_t weight = 1;
+    for (int k = 0; k < 3; ++k) {
+      const double half = 0.5 * (hi_[k] - lo_[k]);
+      const std::size_t step = d[k] > half ? 0 : d[k] < -half ? 2 : 1;  // -L, 0 or +L
+      index += step * weight;
+      weight *= 3;
+    }
+    return index;
   }
 
   std::size_t MemoryBytes() const {
-    return members_.capacity() * sizeof(std::uint32_t) + present_.capacity() / 8;
+    return members_.capacity() * sizeof(std::uint32_t) + present_.capacity() / 8 +
+           shifts_.capacity() * sizeof(Vec3);
   }
 
  private:
@@ -91,6 +121,7 @@ class AllPairs {
   bool periodic_ = false;
   std::vector<std::uint32_t> members_;
   std::vector<bool> present_;
+  std::vector<Vec3> shifts_;  // ImageShifts()
 };
 
 }  // namespace sparsedyn

@@ -186,24 +186,48 @@ double PredictMeeting(const Mover& a, const Mover& b, const Vec3& shift_b, doubl
 }
 
 bool CertainlyApartWithin(const Mover& a, const Mover& b, const Vec3& shift_b, double h) {
-  if (!(h >= 0) || h == kInfinity) return false;
-  const Vec3 dp = b.p + shift_b - a.p;
+  return ApartBound(a, b).Within(shift_b, h);
+}
+
+ApartBound::ApartBound(const Mover& a, const Mover& b)
+    : pa_(a.p),
+      pb_(b.p),
+      abs_sum_(a.p.cwiseAbs() + b.p.cwiseAbs()),
+      r0_(a.r0 + b.r0),
+      r1_(std::max(a.r1 + b.r1, 0.0)),
+      r2_(std::max(a.r2 + b.r2, 0.0)) {
   const Vec3 dv = b.v - a.v;
   const Vec3 da = b.a - a.a;
+  abs_dv_ = dv.cwiseAbs();
+  abs_da_ = da.cwiseAbs();
+  speed_ = dv.norm();
+  acceleration_ = da.norm();
+}
+
+bool ApartBound::Within(const Vec3& shift_b, double h) const {
+  if (!(h >= 0) || h == kInfinity) return false;
+  const Vec3 dp = pb_ + shift_b - pa_;
   // The radii's growth over [0, h] is at most r1+ h + r2+ h^2 / 2, the distance's shrinking
   // at most |dv| h + |da| h^2 / 2 (overall, or along one axis with its components).
-  const double grow = std::max(a.r1 + b.r1, 0.0) * h + 0.5 * std::max(a.r2 + b.r2, 0.0) * h * h;
-  const double reach = a.r0 + b.r0 + grow;
-  const double size = (a.p.cwiseAbs() + b.p.cwiseAbs() + shift_b.cwiseAbs()).sum() + reach;
-  const auto apart = [&](double distance, double speed, double acceleration) {
-    const double closing = speed * h + 0.5 * acceleration * h * h;
-    return distance - reach - closing > 1e-6 * (size + closing);
-  };
-  if (apart(dp.norm(), dv.norm(), da.norm())) return true;
+  const double grow = r1_ * h + 0.5 * r2_ * h * h;
+  const double reach = r0_ + grow;
+  const double size = (abs_sum_ + shift_b.cwiseAbs()).sum() + reach;
+  if (Apart(dp.norm(), speed_, acceleration_, reach, size, h)) return true;
   for (int k = 0; k < 3; ++k) {
-    if (apart(std::abs(dp[k]), std::abs(dv[k]), std::abs(da[k]))) return true;
+    if (Apart(std::abs(dp[k]), abs_dv_[k], abs_da_[k], reach, size, h)) return true;
   }
   return false;
+}
+
+bool ApartBound::ApartAlong(int axis, double shift_along, const Vec3& largest_shift,
+                            double h) const {
+  if (!(h >= 0) || h == kInfinity) return false;
+  const double grow = r1_ * h + 0.5 * r2_ * h * h;
+  const double reach = r0_ + grow;
+  // Within's size for the largest of those shifts: a margin at least as wide as theirs.
+  const double size = (abs_sum_ + largest_shift.cwiseAbs()).sum() + reach;
+  const double d = pb_[axis] + shift_along - pa_[axis];
+  return Apart(std::abs(d), abs_dv_[axis], abs_da_[axis], reach, size, h);
 }
 
 // CertifyLinearMeeting in doubles, for the pairs whose gap is clearly closing at the root dt (all

@@ -34,6 +34,31 @@ inline bool OnStraightLines(const Mover& a, const Mover& b) {
 /// tell; the margin, a millionth of the sizes involved, dwarfs the rounding of these sums.
 bool CertainlyApartWithin(const Mover& a, const Mover& b, const Vec3& shift_b, double h);
 
+/// CertainlyApartWithin for one pair seen at several image shifts (AllPairs' 27 in a periodic
+/// box): what does not depend on the shift (the relative velocity and acceleration and their
+/// norms, the radii's growth rates) worked out once. The same numbers, so the same verdicts.
+class ApartBound {
+ public:
+  ApartBound(const Mover& a, const Mover& b);
+  bool Within(const Vec3& shift_b, double h) const;
+  /// Whether Within(shift, h) holds by the test along `axis` alone for every shift whose
+  /// component there is `shift_along` and whose components' magnitudes are at most
+  /// `largest_shift` (the margin taken at the largest size those images have).
+  bool ApartAlong(int axis, double shift_along, const Vec3& largest_shift, double h) const;
+
+ private:
+  Vec3 pa_, pb_, abs_sum_;  // the positions, and |pa| + |pb| per axis
+  Vec3 abs_dv_, abs_da_;
+  double speed_, acceleration_;  // |dv|, |da|
+  double r0_, r1_, r2_;          // the summed radius and its growth rates (positive parts)
+  // Within's test of one distance against what the paths and radii can close within h.
+  static bool Apart(double distance, double speed, double acceleration, double reach, double size,
+                    double h) {
+    const double closing = speed * h + 0.5 * acceleration * h * h;
+    return distance - reach - closing > 1e-6 * (size + closing);
+  }
+};
+
 /// Moves a double-precision meeting time `dt` > 0 of two spheres on straight lines back until
 /// it is certainly not late (the gap is open and closing there): CertifyLinearInDoubles, or
 /// for the pairs it leaves, the gap evaluated in long double with an error bound at steps back.

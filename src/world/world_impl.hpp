@@ -243,6 +243,12 @@ class World::Impl {
   template <typename Scan>
   void PredictWith(std::uint32_t i, Candidate best, const Grid::Place* place, Scan&& scan);
   void ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift, Candidate& best);
+  // ConsiderMeeting for each of AllPairs' images of j; the time a pair is predicted from; the
+  // test of one image, given the two movers at that time.
+  void ConsiderImages(std::uint32_t i, std::uint32_t j, Candidate& best);
+  double PairReference(std::uint32_t i, std::uint32_t j) const;
+  void ConsiderImage(const Mover& a, const Mover& b, const std::optional<ApartBound>& bound,
+                     double reference, std::uint32_t j, const Vec3& shift, Candidate& best);
   double WrapTime(std::uint32_t i) const;  // AllPairs: i's next wrap in a periodic box
   void Offer(Candidate& best, double t, std::uint32_t j) const;  // keeps the earlier meeting
   // ScanNeighbors' rare step, out of the cell walk: certifies a root of LinearMeetingRoot.

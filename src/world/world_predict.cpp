@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The sparse phase (§3-§4): each element predicts its earliest event against its broad-phase
 // candidates, the container walls and its cell boundary, and keeps exactly one queue entry.
+#include <array>
 #include <cmath>
+#include <optional>
 
 #include "world/world_impl.hpp"
 
@@ -19,22 +21,80 @@ void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& 
                                   Candidate& best) {
   // An engaged pair is tracked by its engagement, not by the sparse phase.
   if (EngagesOnMeet() && engagements_.HasAny(i) && engagements_.Engaged(i, j)) return;
-  ++stats_.pair_tests;
+  const double reference = PairReference(i, j);
+  const Mover a = MoverOf(i, reference), b = MoverOf(j, reference);
+  // The bound only where ConsiderImage can use it (a limit to skip by).
+  const bool bounded = MinOf(best.time, scan_limit_) != kInfinity && !OnStraightLines(a, b);
+  const std::optional<ApartBound> bound =
+      bounded ? std::optional<ApartBound>(std::in_place, a, b) : std::nullopt;
+  ConsiderImage(a, b, bound, reference, j, shift, best);
+}
+
+void World::Impl::ConsiderImages(std::uint32_t i, std::uint32_t j, Candidate& best) {
+  // ConsiderMeeting for every image AllPairs sees j at, the movers worked out once. The
+  // nearest image first: its meeting, if any, is the likeliest to be the earliest, and the
+  // sooner `best` is finite, the more of the other 26 the distance bound skips. The result
+  // does not depend on the order (Offer keeps the earliest, ties to the lower index, and a
+  // skipped image cannot meet before `best`).
+  if (EngagesOnMeet() && engagements_.HasAny(i) && engagements_.Engaged(i, j)) return;
+  const double reference = PairReference(i, j);
+  const Mover a = MoverOf(i, reference), b = MoverOf(j, reference);
+  const std::optional<ApartBound> bound =
+      OnStraightLines(a, b) ? std::nullopt : std::optional<ApartBound>(std::in_place, a, b);
+  const std::vector<Vec3>& shifts = all_pairs_->ImageShifts();
+  const std::size_t nearest = all_pairs_->NearestImage(b.p - a.p);
+  ConsiderImage(a, b, bound, reference, j, shifts[nearest], best);
+  if (shifts.size() == 1) return;
+  // The other 26 images by slabs: an image whose shift along some axis leaves the pair apart
+  // along that axis alone (ApartBound::ApartAlong, 9 tests for all 26) is skipped without a
+  // test of its own. The limit only falls as images are tested, so the slabs stay apart.
+  std::array<std::array<bool, 3>, 3> apart{};  // [axis][shift index along it]
+  const double limit = MinOf(best.time, scan_limit_);
+  if (bound && limit != kInfinity) {
+    const double h = (limit - reference) * (1 + 0x1p-40) + 0x1p-50 * std::abs(limit);
+    const Vec3 largest = all_pairs_->LargestShift();
+    for (int k = 0; k < 3; ++k) {
+      for (std::size_t step = 0; step < 3; ++step) {
+        // ImageShifts() runs x fastest: image r has step r % 3 along x, r / 3 % 3 along y
+        // and r / 9 along z.
+        const std::size_t r = step * (k == 0 ? 1 : k == 1 ? 3 : 9);
+        apart[k][step] = bound->ApartAlong(k, shifts[r][k], largest, h);
+      }
+    }
+  }
+  for (std::size_t r = 0; r < shifts.size(); ++r) {
+    if (r == nearest) continue;
+    if (apart[0][r % 3] || apart[1][r / 3 % 3] || apart[2][r / 9]) {
+      ++stats_.pair_tests;
+      ++stats_.pairs_skipped;
+      continue;
+    }
+    ConsiderImage(a, b, bound, reference, j, shifts[r], best);
+  }
+}
+
+double World::Impl::PairReference(std::uint32_t i, std::uint32_t j) const {
   // Predict from the later of the two segment starts, not from `now`: the result then depends
   // only on the two paths, so a prediction kept across cell crossings, or made by another broad
   // phase at another time, is bit-identical (determinism across broad phases). Not for engaging
   // elements: their spheres may have met and separated since, on unchanged paths, and that past
   // meeting must not come back as one now.
-  const double reference = EngagesOnMeet() ? now_ : std::max(starts_[i].t0, starts_[j].t0);
-  const Mover a = MoverOf(i, reference), b = MoverOf(j, reference);
+  return EngagesOnMeet() ? now_ : std::max(starts_[i].t0, starts_[j].t0);
+}
+
+void World::Impl::ConsiderImage(const Mover& a, const Mover& b,
+                                const std::optional<ApartBound>& bound, double reference,
+                                std::uint32_t j, const Vec3& shift, Candidate& best) {
+  ++stats_.pair_tests;
   // A pair on curved paths or with envelopes costs a root isolation (microseconds). A meeting
   // after the earliest event found so far (or after the scan's limit) cannot become i's event:
   // skip the pairs whose distance keeps them apart that long. The limit is widened by a few
   // ulps so that the meetings skipped are certainly later (ties with it still count).
+  // (`bound`: the pair's ApartBound, none on straight lines.)
   const double limit = MinOf(best.time, scan_limit_);
-  if (limit != kInfinity && !OnStraightLines(a, b)) {
+  if (limit != kInfinity && bound) {
     const double h = (limit - reference) * (1 + 0x1p-40) + 0x1p-50 * std::abs(limit);
-    if (CertainlyApartWithin(a, b, shift, h)) {
+    if (bound->Within(shift, h)) {
       ++stats_.pairs_skipped;
       return;
     }
@@ -313,7 +373,11 @@ void World::Impl::PredictFull(std::uint32_t i) {
     // again in full. (A Grid keeps the meeting across its crossings: no such limit there.)
     scan_limit_ = WrapTime(i);
     PredictWith(i, Candidate{}, nullptr, [&](Candidate& best) {
-      ScanNeighbors(i, best, [&](auto&& fn) { all_pairs_->ForEachNeighbor(i, fn); });
+      if (straight_lines_) {
+        ScanNeighbors(i, best, [&](auto&& fn) { all_pairs_->ForEachNeighbor(i, fn); });
+      } else {
+        all_pairs_->ForEachOther(i, [&](std::uint32_t j) { ConsiderImages(i, j, best); });
+      }
     });
     scan_limit_ = kInfinity;
     return;

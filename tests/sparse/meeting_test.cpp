@@ -207,6 +207,53 @@ TEST(CertainlyApart, NeverClaimsAPairThatMeetsWithinTheTime) {
   EXPECT_GT(meet_within, kPairs / 10);
 }
 
+// The slab verdict AllPairs uses for the 26 images after the nearest: whenever the test along
+// one axis says "apart" for a shift component, every image with that component is apart by
+// the oracle and by Within itself (a skip the per-image test would make too); and it settles
+// most far images (else it would save nothing).
+TEST(CertainlyApart, SlabVerdictHoldsForEveryImageInTheSlab) {
+  scenes::Random random(20261129);
+  const Vec3 length(11, 12, 13);  // RandomMoverPair's points are within [-5, 5]^3
+  std::vector<Vec3> shifts;
+  for (int dz = -1; dz <= 1; ++dz) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        shifts.emplace_back(dx * length[0], dy * length[1], dz * length[2]);
+      }
+    }
+  }
+  int slabs = 0, images_skipped = 0, wrong = 0;
+  constexpr int kPairs = 600;
+  for (int trial = 0; trial < kPairs; ++trial) {
+    const int kind = trial % 4;
+    const auto [a, b] = testing::RandomMoverPair(random, kind == 1 || kind == 3, kind >= 2);
+    const double h = random.Uniform(0.0, 3.0);
+    const ApartBound bound(a, b);
+    for (int k = 0; k < 3; ++k) {
+      for (int step = 0; step < 3; ++step) {
+        const double along = (step - 1) * length[k];
+        if (!bound.ApartAlong(k, along, length, h)) continue;
+        ++slabs;
+        for (const Vec3& shift : shifts) {
+          if (shift[k] != along) continue;
+          SCOPED_TRACE(::testing::Message() << "trial " << trial << " axis " << k << " shift "
+                                            << shift.transpose() << " h " << h);
+          ++images_skipped;
+          EXPECT_TRUE(bound.Within(shift, h));
+          EXPECT_EQ(bound.Within(shift, h), CertainlyApartWithin(a, b, shift, h));
+          Mover image = b;
+          image.p += shift;
+          if (testing::OracleGap(a, image, 0) <= 0 || testing::OracleMeeting(a, image, h)) ++wrong;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  // Of the 9 slabs per pair, the 6 off the middle are far: most should be settled.
+  EXPECT_GT(slabs, kPairs * 5);
+  EXPECT_GT(images_skipped, kPairs * 15);
+}
+
 // Head-on at closing speed 2 from a gap of 3 (contact at dt = 1.5): apart within a time just
 // short of the contact, not within the contact time itself; the axis bound alone settles a pair
 // offset along z that the overall distance would not.
