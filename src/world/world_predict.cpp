@@ -8,6 +8,17 @@
 #include "world/world_impl.hpp"
 
 namespace sparsedyn {
+namespace {
+
+// The time span a scan may skip a pair for: up to `limit` (the earliest event found so far, or
+// the scan's limit) from the pair's `reference` time, widened by a few ulps so that the meetings
+// skipped are certainly later (ties with the limit still count).
+double SkipSpan(double limit, double reference) {
+  return (limit - reference) * (1 + 0x1p-40) + 0x1p-50 * std::abs(limit);
+}
+
+}  // namespace
+
 Mover World::Impl::MoverOf(std::uint32_t i, double t) const {
   if (has_envelopes_) return MoverAt(PathOf(i), Radius(i), envelope_[i], t);
   return MoverAt(PathOf(i), Radius(i), t);
@@ -51,7 +62,7 @@ void World::Impl::ConsiderImages(std::uint32_t i, std::uint32_t j, Candidate& be
   std::array<std::array<bool, 3>, 3> apart{};  // [axis][shift index along it]
   const double limit = MinOf(best.time, scan_limit_);
   if (bound && limit != kInfinity) {
-    const double h = (limit - reference) * (1 + 0x1p-40) + 0x1p-50 * std::abs(limit);
+    const double h = SkipSpan(limit, reference);
     const Vec3 largest = all_pairs_->LargestShift();
     for (int k = 0; k < 3; ++k) {
       for (std::size_t step = 0; step < 3; ++step) {
@@ -88,13 +99,11 @@ void World::Impl::ConsiderImage(const Mover& a, const Mover& b,
   ++stats_.pair_tests;
   // A pair on curved paths or with envelopes costs a root isolation (microseconds). A meeting
   // after the earliest event found so far (or after the scan's limit) cannot become i's event:
-  // skip the pairs whose distance keeps them apart that long. The limit is widened by a few
-  // ulps so that the meetings skipped are certainly later (ties with it still count).
-  // (`bound`: the pair's ApartBound, none on straight lines.)
+  // skip the pairs whose distance keeps them apart that long (`bound`, the pair's ApartBound;
+  // none on straight lines, or where no limit applied when the pair was taken up).
   const double limit = MinOf(best.time, scan_limit_);
   if (limit != kInfinity && bound) {
-    const double h = (limit - reference) * (1 + 0x1p-40) + 0x1p-50 * std::abs(limit);
-    if (bound->Within(shift, h)) {
+    if (bound->Within(shift, SkipSpan(limit, reference))) {
       ++stats_.pairs_skipped;
       return;
     }
