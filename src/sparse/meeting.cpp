@@ -209,8 +209,7 @@ bool ApartBound::Within(const Vec3& shift_b, double h) const {
   const Vec3 dp = pb_ + shift_b - pa_;
   // The radii's growth over [0, h] is at most r1+ h + r2+ h^2 / 2, the distance's shrinking
   // at most |dv| h + |da| h^2 / 2 (overall, or along one axis with its components).
-  const double grow = r1_ * h + 0.5 * r2_ * h * h;
-  const double reach = r0_ + grow;
+  const double reach = Reach(h);
   const double size = (abs_sum_ + shift_b.cwiseAbs()).sum() + reach;
   if (Apart(dp.norm(), speed_, acceleration_, reach, size, h)) return true;
   for (int k = 0; k < 3; ++k) {
@@ -222,8 +221,7 @@ bool ApartBound::Within(const Vec3& shift_b, double h) const {
 bool ApartBound::ApartAlong(int axis, double shift_along, const Vec3& largest_shift,
                             double h) const {
   if (!(h >= 0) || h == kInfinity) return false;
-  const double grow = r1_ * h + 0.5 * r2_ * h * h;
-  const double reach = r0_ + grow;
+  const double reach = Reach(h);
   // Within's size for the largest of those shifts: a margin at least as wide as theirs.
   const double size = (abs_sum_ + largest_shift.cwiseAbs()).sum() + reach;
   const double d = pb_[axis] + shift_along - pa_[axis];

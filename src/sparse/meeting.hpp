@@ -51,6 +51,8 @@ class ApartBound {
   Vec3 abs_dv_, abs_da_;
   double speed_, acceleration_;  // |dv|, |da|
   double r0_, r1_, r2_;          // the summed radius and its growth rates (positive parts)
+  // The summed radius at its largest over [0, h].
+  double Reach(double h) const { return r0_ + (r1_ * h + 0.5 * r2_ * h * h); }
   // Within's test of one distance against what the paths and radii can close within h.
   static bool Apart(double distance, double speed, double acceleration, double reach, double size,
                     double h) {

@@ -243,9 +243,11 @@ class World::Impl {
   template <typename Scan>
   void PredictWith(std::uint32_t i, Candidate best, const Grid::Place* place, Scan&& scan);
   void ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift, Candidate& best);
-  // ConsiderMeeting for each of AllPairs' images of j; the time a pair is predicted from; the
-  // test of one image, given the two movers at that time.
+  // ConsiderMeeting for each of AllPairs' images of j; whether an engagement tracks the pair
+  // (the sparse phase then leaves it); the time a pair is predicted from; the test of one
+  // image, given the two movers at that time.
   void ConsiderImages(std::uint32_t i, std::uint32_t j, Candidate& best);
+  bool EngagedPair(std::uint32_t i, std::uint32_t j) const;
   double PairReference(std::uint32_t i, std::uint32_t j) const;
   void ConsiderImage(const Mover& a, const Mover& b, const std::optional<ApartBound>& bound,
                      double reference, std::uint32_t j, const Vec3& shift, Candidate& best);

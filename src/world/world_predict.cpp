@@ -30,8 +30,7 @@ Mover World::Impl::BodyMoverOf(std::uint32_t i, double t) const {
 
 void World::Impl::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& shift,
                                   Candidate& best) {
-  // An engaged pair is tracked by its engagement, not by the sparse phase.
-  if (EngagesOnMeet() && engagements_.HasAny(i) && engagements_.Engaged(i, j)) return;
+  if (EngagedPair(i, j)) return;
   const double reference = PairReference(i, j);
   const Mover a = MoverOf(i, reference), b = MoverOf(j, reference);
   // The bound only where ConsiderImage can use it (a limit to skip by).
@@ -47,7 +46,7 @@ void World::Impl::ConsiderImages(std::uint32_t i, std::uint32_t j, Candidate& be
   // sooner `best` is finite, the more of the other 26 the distance bound skips. The result
   // does not depend on the order (Offer keeps the earliest, ties to the lower index, and a
   // skipped image cannot meet before `best`).
-  if (EngagesOnMeet() && engagements_.HasAny(i) && engagements_.Engaged(i, j)) return;
+  if (EngagedPair(i, j)) return;
   const double reference = PairReference(i, j);
   const Mover a = MoverOf(i, reference), b = MoverOf(j, reference);
   const std::optional<ApartBound> bound =
@@ -82,6 +81,11 @@ void World::Impl::ConsiderImages(std::uint32_t i, std::uint32_t j, Candidate& be
     }
     ConsiderImage(a, b, bound, reference, j, shifts[r], best);
   }
+}
+
+bool World::Impl::EngagedPair(std::uint32_t i, std::uint32_t j) const {
+  // An engaged pair is tracked by its engagement, not by the sparse phase.
+  return EngagesOnMeet() && engagements_.HasAny(i) && engagements_.Engaged(i, j);
 }
 
 double World::Impl::PairReference(std::uint32_t i, std::uint32_t j) const {
