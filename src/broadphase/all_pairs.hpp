@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "broadphase/cell_crossing.hpp"
 #include "sparse/mover.hpp"
+#include "sparsedyn/assert.hpp"
 #include "sparsedyn/types.hpp"
 
 namespace sparsedyn {
@@ -93,6 +95,12 @@ class AllPairs {
   /// The offsets of the images every neighbour is seen at: the 27 of a periodic box (x fastest,
   /// from -1 to +1 box lengths), else zero alone.
   const std::vector<Vec3>& ImageShifts() const { return shifts_; }
+  /// The shift of each step s = 0, 1, 2 (-L, 0, +L) along every axis, as ImageShifts() has
+  /// them: image r = sx + 3 sy + 9 sz shifts by StepShifts()[sk][k] along axis k. Periodic only.
+  std::array<Vec3, 3> StepShifts() const {
+    SPARSEDYN_ASSERT(shifts_.size() == 27, "StepShifts() of a box without images");
+    return {shifts_[0], shifts_[13], shifts_[26]};
+  }
   /// The largest magnitude of ImageShifts() per axis: the box's lengths if periodic, else 0.
   Vec3 LargestShift() const { return periodic_ ? Vec3(hi_ - lo_) : Vec3::Zero(); }
   /// The index in ImageShifts() of the image nearest along every axis to an element at offset

@@ -210,7 +210,7 @@ bool ApartBound::Within(const Vec3& shift_b, double h) const {
   // The radii's growth over [0, h] is at most r1+ h + r2+ h^2 / 2, the distance's shrinking
   // at most |dv| h + |da| h^2 / 2 (overall, or along one axis with its components).
   const double reach = Reach(h);
-  const double size = (abs_sum_ + shift_b.cwiseAbs()).sum() + reach;
+  const double size = Size(shift_b, reach);
   if (Apart(dp.norm(), speed_, acceleration_, reach, size, h)) return true;
   for (int k = 0; k < 3; ++k) {
     if (Apart(std::abs(dp[k]), abs_dv_[k], abs_da_[k], reach, size, h)) return true;
@@ -223,9 +223,19 @@ bool ApartBound::ApartAlong(int axis, double shift_along, const Vec3& largest_sh
   if (!(h >= 0) || h == kInfinity) return false;
   const double reach = Reach(h);
   // Within's size for the largest of those shifts: a margin at least as wide as theirs.
-  const double size = (abs_sum_ + largest_shift.cwiseAbs()).sum() + reach;
-  const double d = pb_[axis] + shift_along - pa_[axis];
-  return Apart(std::abs(d), abs_dv_[axis], abs_da_[axis], reach, size, h);
+  return ApartAt(axis, shift_along, reach, Size(largest_shift, reach), h);
+}
+
+ApartBound::SlabVerdicts ApartBound::ApartAlongEach(const std::array<Vec3, 3>& along,
+                                                    const Vec3& largest_shift, double h) const {
+  SlabVerdicts apart{};
+  if (!(h >= 0) || h == kInfinity) return apart;
+  const double reach = Reach(h);
+  const double size = Size(largest_shift, reach);
+  for (int k = 0; k < 3; ++k) {
+    for (std::size_t s = 0; s < 3; ++s) apart[k][s] = ApartAt(k, along[s][k], reach, size, h);
+  }
+  return apart;
 }
 
 // CertifyLinearMeeting in doubles, for the pairs whose gap is clearly closing at the root dt (all

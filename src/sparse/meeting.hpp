@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "sparse/mover.hpp"
@@ -45,6 +46,11 @@ class ApartBound {
   /// component there is `shift_along` and whose components' magnitudes are at most
   /// `largest_shift` (the margin taken at the largest size those images have).
   bool ApartAlong(int axis, double shift_along, const Vec3& largest_shift, double h) const;
+  /// ApartAlong for every axis k and each of three shifts along it (`along[s][k]`, s = 0, 1, 2),
+  /// bit for bit, with the summed radius and the margin worked out once: apart[k][s].
+  using SlabVerdicts = std::array<std::array<bool, 3>, 3>;
+  SlabVerdicts ApartAlongEach(const std::array<Vec3, 3>& along, const Vec3& largest_shift,
+                              double h) const;
 
  private:
   Vec3 pa_, pb_, abs_sum_;  // the positions, and |pa| + |pb| per axis
@@ -53,6 +59,15 @@ class ApartBound {
   double r0_, r1_, r2_;          // the summed radius and its growth rates (positive parts)
   // The summed radius at its largest over [0, h].
   double Reach(double h) const { return r0_ + (r1_ * h + 0.5 * r2_ * h * h); }
+  // Within's margin for the images whose shifts are at most `largest_shift` in magnitude.
+  double Size(const Vec3& largest_shift, double reach) const {
+    return (abs_sum_ + largest_shift.cwiseAbs()).sum() + reach;
+  }
+  // ApartAlong with the reach and the margin given.
+  bool ApartAt(int axis, double shift_along, double reach, double size, double h) const {
+    const double d = pb_[axis] + shift_along - pa_[axis];
+    return Apart(std::abs(d), abs_dv_[axis], abs_da_[axis], reach, size, h);
+  }
   // Within's test of one distance against what the paths and radii can close within h.
   static bool Apart(double distance, double speed, double acceleration, double reach, double size,
                     double h) {
@@ -60,6 +75,30 @@ class ApartBound {
     return distance - reach - closing > 1e-6 * (size + closing);
   }
 };
+
+/// The 27 periodic images of a pair in order r = sx + 3 sy + 9 sz (x fastest, as AllPairs'
+/// ImageShifts()), s being each axis's step (0, 1, 2 for -L, 0, +L): whether image r is apart by
+/// the slab verdicts of its steps (apart[k][s], ApartBound::ApartAlongEach), along some axis.
+inline bool ImageApart(const ApartBound::SlabVerdicts& apart, std::size_t r) {
+  return apart[0][r % 3] || apart[1][r / 3 % 3] || apart[2][r / 9];
+}
+
+/// Whether ImageApart holds for each of the 26 images other than `nearest`, without visiting
+/// them: the images it leaves are those whose step along every axis is not apart, so either
+/// some axis has no such step, or along every axis only the nearest image's step may lack it.
+inline bool OtherImagesApart(const ApartBound::SlabVerdicts& apart, std::size_t nearest) {
+  const std::array<std::size_t, 3> steps = {nearest % 3, nearest / 3 % 3, nearest / 9};
+  bool some_axis_apart = false, only_nearest_left = true;
+  for (std::size_t k = 0; k < 3; ++k) {
+    bool axis_apart = true;
+    for (std::size_t s = 0; s < 3; ++s) {
+      axis_apart &= apart[k][s];
+      only_nearest_left &= s == steps[k] || apart[k][s];
+    }
+    some_axis_apart |= axis_apart;
+  }
+  return some_axis_apart || only_nearest_left;
+}
 
 /// Moves a double-precision meeting time `dt` > 0 of two spheres on straight lines back until
 /// it is certainly not late (the gap is open and closing there): CertifyLinearInDoubles, or

@@ -56,25 +56,23 @@ void World::Impl::ConsiderImages(std::uint32_t i, std::uint32_t j, Candidate& be
   ConsiderImage(a, b, bound, reference, j, shifts[nearest], best);
   if (shifts.size() == 1) return;
   // The other 26 images by slabs: an image whose shift along some axis leaves the pair apart
-  // along that axis alone (ApartBound::ApartAlong, 9 tests for all 26) is skipped without a
+  // along that axis alone (ApartBound::ApartAlongEach, 9 tests for all 26) is skipped without a
   // test of its own. The limit only falls as images are tested, so the slabs stay apart.
-  std::array<std::array<bool, 3>, 3> apart{};  // [axis][shift index along it]
+  ApartBound::SlabVerdicts apart{};  // [axis][step along it]
   const double limit = MinOf(best.time, scan_limit_);
   if (bound && limit != kInfinity) {
-    const double h = SkipSpan(limit, reference);
-    const Vec3 largest = all_pairs_->LargestShift();
-    for (int k = 0; k < 3; ++k) {
-      for (std::size_t step = 0; step < 3; ++step) {
-        // ImageShifts() runs x fastest: image r has step r % 3 along x, r / 3 % 3 along y
-        // and r / 9 along z.
-        const std::size_t r = step * (k == 0 ? 1 : k == 1 ? 3 : 9);
-        apart[k][step] = bound->ApartAlong(k, shifts[r][k], largest, h);
-      }
+    apart = bound->ApartAlongEach(all_pairs_->StepShifts(), all_pairs_->LargestShift(),
+                                  SkipSpan(limit, reference));
+    // All 26 at once, the common case for a pair across the box.
+    if (OtherImagesApart(apart, nearest)) {
+      stats_.pair_tests += shifts.size() - 1;
+      stats_.pairs_skipped += shifts.size() - 1;
+      return;
     }
   }
   for (std::size_t r = 0; r < shifts.size(); ++r) {
     if (r == nearest) continue;
-    if (apart[0][r % 3] || apart[1][r / 3 % 3] || apart[2][r / 9]) {
+    if (ImageApart(apart, r)) {
       ++stats_.pair_tests;
       ++stats_.pairs_skipped;
       continue;

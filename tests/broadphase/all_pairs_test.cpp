@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <set>
@@ -29,6 +30,11 @@ TEST(AllPairs, VisitsEveryOtherElementAtEveryImage) {
                           (static_cast<double>(r / 3 % 3) - 1) * 5,
                           (static_cast<double>(r / 9) - 1) * 6);
       EXPECT_EQ(all.ImageShifts()[r], expected) << "image " << r;
+      // Its steps' shifts along each axis are its components.
+      const std::array<Vec3, 3> steps = all.StepShifts();
+      EXPECT_EQ(steps[r % 3][0], expected[0]) << "image " << r;
+      EXPECT_EQ(steps[r / 3 % 3][1], expected[1]) << "image " << r;
+      EXPECT_EQ(steps[r / 9][2], expected[2]) << "image " << r;
     }
     std::multiset<std::uint32_t> seen;
     std::set<std::pair<std::uint32_t, std::uint32_t>> shifted;  // (j, image index)

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "scenes/random.hpp"
@@ -252,6 +253,66 @@ TEST(CertainlyApart, SlabVerdictHoldsForEveryImageInTheSlab) {
   // Of the 9 slabs per pair, the 6 off the middle are far: most should be settled.
   EXPECT_GT(slabs, kPairs * 5);
   EXPECT_GT(images_skipped, kPairs * 15);
+}
+
+// ApartAlongEach, which ConsiderImages skips all 26 other images by at once, gives ApartAlong's
+// verdict for every axis and step, in order (along[s][k]), also for spans it cannot use.
+TEST(CertainlyApart, SlabVerdictsAtOnceAreTheOneByOneVerdicts) {
+  scenes::Random random(20261130);
+  const Vec3 length(11, 12, 13);
+  // Steps along each axis, each axis with its own shifts (a swapped index would show).
+  const std::array<Vec3, 3> along = {Vec3(-length[0], -length[1], -length[2]), Vec3::Zero(),
+                                     Vec3(length[0], length[1], length[2])};
+  int apart = 0, close = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const int kind = trial % 4;
+    const auto [a, b] = testing::RandomMoverPair(random, kind == 1 || kind == 3, kind >= 2);
+    const double h =
+        trial % 50 == 0 ? (trial % 100 == 0 ? -1.0 : kInfinity) : random.Uniform(0.0, 3.0);
+    const ApartBound bound(a, b);
+    const ApartBound::SlabVerdicts verdicts = bound.ApartAlongEach(along, length, h);
+    for (int k = 0; k < 3; ++k) {
+      for (std::size_t s = 0; s < 3; ++s) {
+        SCOPED_TRACE(::testing::Message() << "trial " << trial << " axis " << k << " step " << s);
+        const bool one = bound.ApartAlong(k, along[s][k], length, h);
+        EXPECT_EQ(verdicts[k][s], one);
+        ++(one ? apart : close);
+      }
+    }
+  }
+  // Both verdicts are common (else the comparison would say little).
+  EXPECT_GT(apart, 600);
+  EXPECT_GT(close, 600);
+}
+
+// The images the slab verdicts skip, against the images themselves: every one of the 512
+// verdict sets, each image by its steps along z, y and x (x fastest), and the 26 other than
+// each possible nearest one at once.
+TEST(CertainlyApart, SlabVerdictsSkipTheImagesOfTheirSteps) {
+  int all_others = 0;
+  for (unsigned bits = 0; bits < 512; ++bits) {
+    ApartBound::SlabVerdicts apart{};
+    for (unsigned b = 0; b < 9; ++b) apart[b / 3][b % 3] = ((bits >> b) & 1u) != 0;
+    std::array<bool, 27> skipped{};
+    std::size_t r = 0;
+    for (std::size_t sz = 0; sz < 3; ++sz) {
+      for (std::size_t sy = 0; sy < 3; ++sy) {
+        for (std::size_t sx = 0; sx < 3; ++sx, ++r) {
+          skipped[r] = apart[0][sx] || apart[1][sy] || apart[2][sz];
+          EXPECT_EQ(ImageApart(apart, r), skipped[r]) << "verdicts " << bits << " image " << r;
+        }
+      }
+    }
+    for (std::size_t nearest = 0; nearest < 27; ++nearest) {
+      bool others = true;
+      for (std::size_t q = 0; q < 27; ++q) others = others && (q == nearest || skipped[q]);
+      EXPECT_EQ(OtherImagesApart(apart, nearest), others)
+          << "verdicts " << bits << " nearest " << nearest;
+      all_others += others ? 1 : 0;
+    }
+  }
+  EXPECT_GT(all_others, 0);
+  EXPECT_LT(all_others, 512 * 27);
 }
 
 // Head-on at closing speed 2 from a gap of 3 (contact at dt = 1.5): apart within a time just
