@@ -218,14 +218,6 @@ bool ApartBound::Within(const Vec3& shift_b, double h) const {
   return false;
 }
 
-bool ApartBound::ApartAlong(int axis, double shift_along, const Vec3& largest_shift,
-                            double h) const {
-  if (!(h >= 0) || h == kInfinity) return false;
-  const double reach = Reach(h);
-  // Within's size for the largest of those shifts: a margin at least as wide as theirs.
-  return ApartAt(axis, shift_along, reach, Size(largest_shift, reach), h);
-}
-
 ApartBound::SlabVerdicts ApartBound::ApartAlongEach(const std::array<Vec3, 3>& along,
                                                     const Vec3& largest_shift, double h) const {
   SlabVerdicts apart{};

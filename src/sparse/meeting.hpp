@@ -42,12 +42,11 @@ class ApartBound {
  public:
   ApartBound(const Mover& a, const Mover& b);
   bool Within(const Vec3& shift_b, double h) const;
-  /// Whether Within(shift, h) holds by the test along `axis` alone for every shift whose
-  /// component there is `shift_along` and whose components' magnitudes are at most
-  /// `largest_shift` (the margin taken at the largest size those images have).
-  bool ApartAlong(int axis, double shift_along, const Vec3& largest_shift, double h) const;
-  /// ApartAlong for every axis k and each of three shifts along it (`along[s][k]`, s = 0, 1, 2),
-  /// bit for bit, with the summed radius and the margin worked out once: apart[k][s].
+  /// For every axis k and each of three shifts along it (`along[s][k]`, s = 0, 1, 2), apart[k][s]:
+  /// whether Within(shift, h) holds by the test along k alone for every shift whose component
+  /// there is along[s][k] and whose components' magnitudes are at most `largest_shift` (the
+  /// margin taken at the largest size those images have). The summed radius and the margin are
+  /// worked out once. All false when h is negative, infinite or NaN.
   using SlabVerdicts = std::array<std::array<bool, 3>, 3>;
   SlabVerdicts ApartAlongEach(const std::array<Vec3, 3>& along, const Vec3& largest_shift,
                               double h) const;
@@ -63,7 +62,7 @@ class ApartBound {
   double Size(const Vec3& largest_shift, double reach) const {
     return (abs_sum_ + largest_shift.cwiseAbs()).sum() + reach;
   }
-  // ApartAlong with the reach and the margin given.
+  // The verdict along `axis` for the shift component `shift_along`, the reach and margin given.
   bool ApartAt(int axis, double shift_along, double reach, double size, double h) const {
     const double d = pb_[axis] + shift_along - pa_[axis];
     return Apart(std::abs(d), abs_dv_[axis], abs_da_[axis], reach, size, h);

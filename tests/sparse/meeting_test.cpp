@@ -208,13 +208,16 @@ TEST(CertainlyApart, NeverClaimsAPairThatMeetsWithinTheTime) {
   EXPECT_GT(meet_within, kPairs / 10);
 }
 
-// The slab verdict AllPairs uses for the 26 images after the nearest: whenever the test along
-// one axis says "apart" for a shift component, every image with that component is apart by
-// the oracle and by Within itself (a skip the per-image test would make too); and it settles
-// most far images (else it would save nothing).
+// The slab verdicts AllPairs uses for the 26 images after the nearest (ApartAlongEach): whenever
+// the test along axis k says "apart" for step s, every image whose shift along k is along[s][k]
+// is apart by the oracle and by Within itself (a skip the per-image test would make too); and it
+// settles most far images (else it would save nothing). Each axis has its own period, so
+// verdicts read with the axis and step swapped would name the wrong images. With no time span
+// (h < 0) or an unbounded one, no verdict at all.
 TEST(CertainlyApart, SlabVerdictHoldsForEveryImageInTheSlab) {
   scenes::Random random(20261129);
   const Vec3 length(11, 12, 13);  // RandomMoverPair's points are within [-5, 5]^3
+  const std::array<Vec3, 3> along = {-length, Vec3::Zero(), length};
   std::vector<Vec3> shifts;
   for (int dz = -1; dz <= 1; ++dz) {
     for (int dy = -1; dy <= 1; ++dy) {
@@ -223,20 +226,25 @@ TEST(CertainlyApart, SlabVerdictHoldsForEveryImageInTheSlab) {
       }
     }
   }
-  int slabs = 0, images_skipped = 0, wrong = 0;
+  int slabs = 0, images_skipped = 0, wrong = 0, without_span = 0;
   constexpr int kPairs = 600;
   for (int trial = 0; trial < kPairs; ++trial) {
     const int kind = trial % 4;
     const auto [a, b] = testing::RandomMoverPair(random, kind == 1 || kind == 3, kind >= 2);
     const double h = random.Uniform(0.0, 3.0);
     const ApartBound bound(a, b);
+    for (const double no_span : {-1.0, kInfinity, std::nan("")}) {
+      for (const auto& axis : bound.ApartAlongEach(along, length, no_span)) {
+        for (const bool apart : axis) without_span += apart ? 1 : 0;
+      }
+    }
+    const ApartBound::SlabVerdicts apart = bound.ApartAlongEach(along, length, h);
     for (int k = 0; k < 3; ++k) {
-      for (int step = 0; step < 3; ++step) {
-        const double along = (step - 1) * length[k];
-        if (!bound.ApartAlong(k, along, length, h)) continue;
+      for (std::size_t s = 0; s < 3; ++s) {
+        if (!apart[k][s]) continue;
         ++slabs;
         for (const Vec3& shift : shifts) {
-          if (shift[k] != along) continue;
+          if (shift[k] != along[s][k]) continue;
           SCOPED_TRACE(::testing::Message() << "trial " << trial << " axis " << k << " shift "
                                             << shift.transpose() << " h " << h);
           ++images_skipped;
@@ -250,39 +258,10 @@ TEST(CertainlyApart, SlabVerdictHoldsForEveryImageInTheSlab) {
     }
   }
   EXPECT_EQ(wrong, 0);
+  EXPECT_EQ(without_span, 0);
   // Of the 9 slabs per pair, the 6 off the middle are far: most should be settled.
   EXPECT_GT(slabs, kPairs * 5);
   EXPECT_GT(images_skipped, kPairs * 15);
-}
-
-// ApartAlongEach, which ConsiderImages skips all 26 other images by at once, gives ApartAlong's
-// verdict for every axis and step, in order (along[s][k]), also for spans it cannot use.
-TEST(CertainlyApart, SlabVerdictsAtOnceAreTheOneByOneVerdicts) {
-  scenes::Random random(20261130);
-  const Vec3 length(11, 12, 13);
-  // Steps along each axis, each axis with its own shifts (a swapped index would show).
-  const std::array<Vec3, 3> along = {Vec3(-length[0], -length[1], -length[2]), Vec3::Zero(),
-                                     Vec3(length[0], length[1], length[2])};
-  int apart = 0, close = 0;
-  for (int trial = 0; trial < 600; ++trial) {
-    const int kind = trial % 4;
-    const auto [a, b] = testing::RandomMoverPair(random, kind == 1 || kind == 3, kind >= 2);
-    const double h =
-        trial % 50 == 0 ? (trial % 100 == 0 ? -1.0 : kInfinity) : random.Uniform(0.0, 3.0);
-    const ApartBound bound(a, b);
-    const ApartBound::SlabVerdicts verdicts = bound.ApartAlongEach(along, length, h);
-    for (int k = 0; k < 3; ++k) {
-      for (std::size_t s = 0; s < 3; ++s) {
-        SCOPED_TRACE(::testing::Message() << "trial " << trial << " axis " << k << " step " << s);
-        const bool one = bound.ApartAlong(k, along[s][k], length, h);
-        EXPECT_EQ(verdicts[k][s], one);
-        ++(one ? apart : close);
-      }
-    }
-  }
-  // Both verdicts are common (else the comparison would say little).
-  EXPECT_GT(apart, 600);
-  EXPECT_GT(close, 600);
 }
 
 // The images the slab verdicts skip, against the images themselves: every one of the 512
