@@ -95,6 +95,10 @@ struct Scenario {
   int first_bodies = 8;   // at least; up to 5 more
   int steps = 14;         // AdvanceTo calls, each followed by an AddBody half of the time
   bool envelopes = true;  // allowed (they take the World off the grid, to AllPairs)
+  // Every body under a thrust of its own from the start (curved paths, elastic): in a small
+  // periodic box, pairs then often meet through an image other than the one nearest when
+  // they predict, which AllPairs' image skipping must not miss.
+  bool curved = false;
   // Inelastic spheres falling onto the floor of a walled box, in columns of their own, which
   // come to rest there (held by the wall) and slide on it.
   bool settling = false;
@@ -131,12 +135,13 @@ class ReferenceRun {
     // ever faster (the collapse guard keeps it elastic below kElasticBelow, but at a huge rate).
     // Thrusts and envelopes from the start, or only on bodies added while the world runs: a
     // world that started on straight lines, or without envelopes, must change its ways then.
-    forced_ = Chance(0.5);
+    forced_ = Chance(0.5) || scenario.curved;
     if (forced_ && Chance(0.5)) {
       settings.gravity = Chance(0.5) ? Vec3(0, 0, -Uniform(1, 5)) : RandomVec(3);
     }
     if (scenario.settling) settings.gravity = Vec3(0, 0, -Uniform(5, 10));
     thrusts_ = forced_ ? static_cast<Later>(rng_() % 3) : Later::kNever;
+    if (scenario.curved) thrusts_ = Later::kAlways;
     envelopes_ =
         Chance(0.4) && scenario.envelopes ? static_cast<Later>(1 + rng_() % 2) : Later::kNever;
     gravity_ = settings.gravity;
@@ -214,7 +219,7 @@ class ReferenceRun {
     }
     def.mass = Uniform(0.3, 3.0);
     def.restitution = forced_ || Chance(0.5) ? 1.0 : Uniform(0.6, 1.0);
-    if (Allowed(thrusts_) && Chance(0.4)) def.thrust = RandomVec(1.5);
+    if (Allowed(thrusts_) && (scenario_.curved || Chance(0.4))) def.thrust = RandomVec(1.5);
     if (Allowed(envelopes_) && Chance(0.4)) {
       def.envelope = {Uniform(0, 0.1), Uniform(0, 0.1), Uniform(0, 0.05)};
     }
@@ -267,7 +272,7 @@ class ReferenceRun {
     if (!(t > from)) return;
     const Real span = t - from;
     const bool periodic = scenario_.kind == Container::Kind::kPeriodicBox;
-    const int images = periodic ? 1 : 0;
+    const Real side = scenario_.side;
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       const ReferenceBody& a = bodies_[i];
       for (std::size_t j = i + 1; j < bodies_.size(); ++j) {
@@ -283,10 +288,17 @@ class ReferenceRun {
           low[k] = SmallestOfQuadratic(d0[k], dv[k], da[k], span);
           high[k] = -SmallestOfQuadratic(-d0[k], -dv[k], -da[k], span);
         }
-        for (int x = -images; x <= images; ++x) {
-          for (int y = -images; y <= images; ++y) {
-            for (int z = -images; z <= images; ++z) {
-              const RealVec shift = RealVec(x, y, z) * static_cast<Real>(scenario_.side);
+        // In a periodic box, every image whose box comes within the reach of the origin along
+        // each axis (fast bodies in a small box: beyond the 27 nearest).
+        std::array<int, 3> first{}, last{};
+        for (int k = 0; k < 3 && periodic; ++k) {
+          first[k] = static_cast<int>(std::ceil((-reach - high[k]) / side));
+          last[k] = static_cast<int>(std::floor((reach - low[k]) / side));
+        }
+        for (int x = first[0]; x <= last[0]; ++x) {
+          for (int y = first[1]; y <= last[1]; ++y) {
+            for (int z = first[2]; z <= last[2]; ++z) {
+              const RealVec shift = RealVec(x, y, z) * side;
               Real outside = 0;  // squared distance from the origin to the image's box
               for (int k = 0; k < 3; ++k) {
                 const Real below = std::max({Real{0}, low[k] + shift[k], -(high[k] + shift[k])});
@@ -455,24 +467,41 @@ class ReferenceRuns : public ::testing::TestWithParam<Container::Kind> {};
 
 // Many small worlds: every feature, few bodies, the grid's outer layer (wrapped in a periodic
 // box) and its rebuilds.
-TEST_P(ReferenceRuns, NoCollisionMissedOrLateAndEveryResponseExact) {
+// The collisions checked and the pairs on curved paths the distance bound skipped, over runs.
+struct Checked {
   std::uint64_t collisions = 0, skipped = 0;
-  for (const Broadphase broadphase : {Broadphase::kAllPairs, Broadphase::kGrid}) {
-    for (std::uint32_t seed = 1; seed <= 25 && !HasFailure(); ++seed) {
-      Scenario scenario;
-      scenario.kind = GetParam();
-      scenario.broadphase = broadphase;
-      scenario.seed = seed;
-      ReferenceRun run(scenario);
-      collisions += run.Run();
-      skipped += run.PairsSkipped();
-    }
+  void Print() const {
+    std::printf("collisions checked against the reference: %llu (pairs skipped by the bound: %llu)\n",
+                static_cast<unsigned long long>(collisions),
+                static_cast<unsigned long long>(skipped));
   }
-  std::printf("collisions checked against the reference: %llu (pairs skipped by the bound: %llu)\n",
-              static_cast<unsigned long long>(collisions),
-              static_cast<unsigned long long>(skipped));
-  EXPECT_GT(collisions, GetParam() == Container::Kind::kOpen ? 200u : 1000u);
-  EXPECT_GT(skipped, 1000u);
+};
+
+// `scenario` run with each seed from 1 to `seeds`, until a failure.
+Checked RunSeeds(Scenario scenario, std::uint32_t seeds) {
+  Checked checked;
+  for (std::uint32_t seed = 1; seed <= seeds && !::testing::Test::HasFailure(); ++seed) {
+    scenario.seed = seed;
+    ReferenceRun run(scenario);
+    checked.collisions += run.Run();
+    checked.skipped += run.PairsSkipped();
+  }
+  return checked;
+}
+
+TEST_P(ReferenceRuns, NoCollisionMissedOrLateAndEveryResponseExact) {
+  Checked checked;
+  for (const Broadphase broadphase : {Broadphase::kAllPairs, Broadphase::kGrid}) {
+    Scenario scenario;
+    scenario.kind = GetParam();
+    scenario.broadphase = broadphase;
+    const Checked run = RunSeeds(scenario, 25);
+    checked.collisions += run.collisions;
+    checked.skipped += run.skipped;
+  }
+  checked.Print();
+  EXPECT_GT(checked.collisions, GetParam() == Container::Kind::kOpen ? 200u : 1000u);
+  EXPECT_GT(checked.skipped, 1000u);
 }
 
 // A few larger worlds, on the grid in the boxes: cells away from the box's faces (the interior
@@ -492,6 +521,25 @@ TEST_P(ReferenceRuns, LargerWorldsNeitherMissNorDelay) {
   std::printf("collisions checked against the reference: %llu\n",
               static_cast<unsigned long long>(collisions));
   EXPECT_GT(collisions, 400u);
+}
+
+// Bodies under thrusts of their own in a periodic box little more than twice the largest
+// diameter, on AllPairs (too few cells for the grid): pairs separated by nearly half the box
+// close it along curved paths, so that they meet through an image other than the nearest one
+// at their prediction, and the image skipping (ApartBound's slab verdicts) is exercised across
+// all 26 other images. The reference samples every image within reach.
+TEST(ReferenceSmallPeriodicBox, CurvedPathsMeetThroughTheFartherImagesToo) {
+  Scenario scenario;
+  scenario.kind = Container::Kind::kPeriodicBox;
+  scenario.broadphase = Broadphase::kAllPairs;
+  scenario.side = 3.5;
+  scenario.first_bodies = 4;
+  scenario.envelopes = false;
+  scenario.curved = true;
+  const Checked checked = RunSeeds(scenario, 30);
+  checked.Print();
+  EXPECT_GT(checked.collisions, 1000u);
+  EXPECT_GT(checked.skipped, 1000u);
 }
 
 // Inelastic spheres dropped onto the floor come to rest on it (bouncing ever lower until the
