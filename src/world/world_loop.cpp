@@ -127,11 +127,6 @@ void World::Impl::FetchAhead() const {
     grid_->FetchAround(CellAhead(next[2]));
     const Prediction& event = PredictionOf(next[2]);
     if (event.kind == EventKind::kSphereMeet) FetchElement(event.target);
-    if (event.kind == EventKind::kCellCrossing) {
-      // A crossing checks whether its kept meeting's target changed path.
-      const std::uint32_t kept = event.target;
-      if (kept != kNoIndex) Prefetch(&PredictionOf(kept).version);
-    }
   }
   if (count >= 4) FetchElement(next[3]);
   if (count >= 2) {
