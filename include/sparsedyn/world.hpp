@@ -181,6 +181,11 @@ class World {
   Status Validate() const;
   /// Bytes of memory held by the World's data structures.
   std::size_t MemoryBytes() const;
+  /// A 64-bit hash (FNV-1a) of the World's state: the clock, the body count and, in BodyId
+  /// order, every body's StateAt(Time()) (position, velocity, acceleration, orientation,
+  /// angular velocity, version) to the bit. Equal states give equal hashes on every build;
+  /// golden values in tests pin the behaviour (tests/world/state_hash_test.cpp).
+  std::uint64_t StateHash() const;
 
  private:
   class Impl;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <sstream>
 
@@ -455,5 +456,33 @@ Vec3 World::AngularMomentum() const { return impl_->AngularMomentum(); }
 double World::MaxPenetration() const { return impl_->max_penetration_; }
 Status World::Validate() const { return impl_->Validate(); }
 std::size_t World::MemoryBytes() const { return impl_->MemoryBytes(); }
+
+std::uint64_t World::StateHash() const {
+  // FNV-1a over the bytes of each value (little-endian integers and IEEE doubles).
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  const auto mix = [&hash](std::uint64_t bits) {
+    for (int k = 0; k < 8; ++k) {
+      hash ^= (bits >> (8 * k)) & 0xffu;
+      hash *= 0x100000001b3ull;
+    }
+  };
+  const auto mix_double = [&mix](double x) { mix(std::bit_cast<std::uint64_t>(x)); };
+  const auto mix_vector = [&mix_double](const Vec3& v) {
+    for (int k = 0; k < 3; ++k) mix_double(v[k]);
+  };
+  mix_double(Time());
+  mix(BodyCount());
+  for (std::uint32_t index = 0; index < BodyCount(); ++index) {
+    const BodyState s = StateAt(IdOf(index), Time());
+    mix_vector(s.position);
+    mix_vector(s.velocity);
+    mix_vector(s.acceleration);
+    const Eigen::Vector4d q = s.orientation.coeffs();
+    for (int k = 0; k < 4; ++k) mix_double(q[k]);
+    mix_vector(s.angular_velocity);
+    mix(s.version);
+  }
+  return hash;
+}
 
 }  // namespace sparsedyn

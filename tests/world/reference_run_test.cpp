@@ -191,6 +191,7 @@ class ReferenceRun {
   // Pairs on curved paths that a distance bound settled without a root: the reference checks
   // those skips too.
   std::uint64_t PairsSkipped() const { return world_->Stats().pairs_skipped; }
+  std::uint64_t StateHash() const { return world_->StateHash(); }
 
  private:
   bool Chance(double p) { return std::uniform_real_distribution<double>(0, 1)(rng_) < p; }
@@ -465,18 +466,24 @@ class ReferenceRun {
 
 class ReferenceRuns : public ::testing::TestWithParam<Container::Kind> {};
 
-// The collisions checked and the pairs on curved paths the distance bound skipped, over runs.
+// The collisions checked and the pairs on curved paths the distance bound skipped, over runs,
+// and the worlds' final StateHash values combined in run order: a golden value pins every run's
+// behaviour to the bit (tests/world/state_hash_test.cpp says when to change one).
 struct Checked {
-  std::uint64_t collisions = 0, skipped = 0;
+  std::uint64_t collisions = 0, skipped = 0, hash = 0;
+  void AddHash(std::uint64_t world_hash) { hash = hash * 0x100000001b3ull ^ world_hash; }
   Checked& operator+=(const Checked& other) {
     collisions += other.collisions;
     skipped += other.skipped;
+    AddHash(other.hash);
     return *this;
   }
   void Print() const {
     std::printf(
-        "collisions checked against the reference: %llu (pairs skipped by the bound: %llu)\n",
-        static_cast<unsigned long long>(collisions), static_cast<unsigned long long>(skipped));
+        "collisions checked against the reference: %llu (pairs skipped by the bound: %llu), "
+        "hash 0x%016llx\n",
+        static_cast<unsigned long long>(collisions), static_cast<unsigned long long>(skipped),
+        static_cast<unsigned long long>(hash));
   }
 };
 
@@ -488,6 +495,7 @@ Checked RunSeeds(Scenario scenario, std::uint32_t first, std::uint32_t last) {
     ReferenceRun run(scenario);
     checked.collisions += run.Run();
     checked.skipped += run.PairsSkipped();
+    checked.AddHash(run.StateHash());
   }
   return checked;
 }
@@ -503,6 +511,9 @@ TEST_P(ReferenceRuns, NoCollisionMissedOrLateAndEveryResponseExact) {
     checked += RunSeeds(scenario, 1, 25);
   }
   checked.Print();
+  EXPECT_EQ(checked.hash, GetParam() == Container::Kind::kOpen        ? 0x7d450192a34583faull
+                          : GetParam() == Container::Kind::kWalledBox ? 0x62a348d2cbfc6f3aull
+                                                                      : 0x82512e627d6dec52ull);
   EXPECT_GT(checked.collisions, GetParam() == Container::Kind::kOpen ? 200u : 1000u);
   EXPECT_GT(checked.skipped, 1000u);
 }
@@ -518,6 +529,9 @@ TEST_P(ReferenceRuns, LargerWorldsNeitherMissNorDelay) {
   scenario.envelopes = false;
   const Checked checked = RunSeeds(scenario, 101, 104);
   checked.Print();
+  EXPECT_EQ(checked.hash, GetParam() == Container::Kind::kOpen        ? 0x65413c8f06840a4eull
+                          : GetParam() == Container::Kind::kWalledBox ? 0xfaa8e1bcbf51fcbdull
+                                                                      : 0xae749e350fcf2416ull);
   EXPECT_GT(checked.collisions, 400u);
 }
 
@@ -536,6 +550,7 @@ TEST(ReferenceSmallPeriodicBox, CurvedPathsMeetThroughTheFartherImagesToo) {
   scenario.curved = true;
   const Checked checked = RunSeeds(scenario, 1, 30);
   checked.Print();
+  EXPECT_EQ(checked.hash, 0x543a4d6dcc81fdd7ull);
   EXPECT_GT(checked.collisions, 1000u);
   EXPECT_GT(checked.skipped, 1000u);
 }
@@ -545,6 +560,7 @@ TEST(ReferenceSmallPeriodicBox, CurvedPathsMeetThroughTheFartherImagesToo) {
 // with each other and the side walls, without the clock stalling.
 TEST(ReferenceSettling, InelasticSpheresComeToRestOnTheFloor) {
   std::uint64_t collisions = 0;
+  Checked checked;
   for (std::uint32_t seed = 1; seed <= 12 && !HasFailure(); ++seed) {
     Scenario scenario;
     scenario.seed = seed;
@@ -552,10 +568,14 @@ TEST(ReferenceSettling, InelasticSpheresComeToRestOnTheFloor) {
     scenario.steps = 40;  // to t = 24 on average (at least 8): settled after 9 s at most
     scenario.settling = true;
     scenario.broadphase = seed % 2 == 0 ? Broadphase::kGrid : Broadphase::kAllPairs;
-    collisions += ReferenceRun(scenario).Run();
+    ReferenceRun run(scenario);
+    collisions += run.Run();
+    checked.AddHash(run.StateHash());
   }
-  std::printf("collisions checked against the reference: %llu\n",
-              static_cast<unsigned long long>(collisions));
+  std::printf("collisions checked against the reference: %llu, hash 0x%016llx\n",
+              static_cast<unsigned long long>(collisions),
+              static_cast<unsigned long long>(checked.hash));
+  EXPECT_EQ(checked.hash, 0xd8b98f8d232c9fa9ull);
   EXPECT_GT(collisions, 500u);
 }
 
