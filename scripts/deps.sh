@@ -11,7 +11,7 @@ set -euo pipefail
 packages=(build-essential cmake pkg-config libeigen3-dev libqhull-dev libcli11-dev
           nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libassimp-dev
           libfcl-dev libccd-dev libbullet-dev libcgal-dev libgmp-dev libmpfr-dev
-          libcpp-httplib-dev)
+          libcpp-httplib-dev python3)
 if [[ "${1:-}" == "--peers" ]]; then
   packages+=(gnuplot-nox)
 fi

@@ -10,8 +10,8 @@
 #include "broadphase/cell_crossing.hpp"
 #include "math/branchless.hpp"
 #include "math/fast_divisor.hpp"
-#include "math/huge_pages.hpp"
-#include "math/prefetch.hpp"
+#include "base/huge_pages.hpp"
+#include "base/prefetch.hpp"
 #include "sparse/mover.hpp"
 #include "sparsedyn/assert.hpp"
 #include "sparsedyn/types.hpp"
@@ -259,7 +259,7 @@ class Grid {
     return shift;
   }
 
-  // The look-ahead of a gas beyond the caches (World::Impl::FetchAhead). Fetches only, for
+  // The look-ahead of a gas beyond the caches (the World's LookAhead). Fetches only, for
   // guesses: any cell index is accepted (wrapped into the grid, a wrong cell near the outer
   // layer costs a useless fetch).
 

@@ -31,9 +31,9 @@ ClosestFeatures ConventionalWorld::Impl::PairFeatures(std::uint32_t a, std::uint
 }
 
 double ConventionalWorld::Impl::WallGap(std::uint32_t i, int wall, double t) const {
-  Vec3 n;
-  double offset = 0;
-  ConventionalWallPlane(settings_.container, wall, n, offset);
+  const WallPlane plane = BoxWall(settings_.container, wall);
+  const Vec3& n = plane.normal;
+  const double offset = plane.offset;
   const Pose pose = bodies_[i].path.PoseAt(t);
   const ConvexPolyhedron& polyhedron = *ShapeOf(i).polyhedron;
   const Vec3 n_B = pose.rotation.conjugate() * n;
@@ -81,9 +81,9 @@ bool ConventionalWorld::Impl::ResolvePair(std::uint32_t a, std::uint32_t b, doub
 }
 
 bool ConventionalWorld::Impl::ResolveWall(std::uint32_t i, int wall, double t) {
-  Vec3 n;
-  double offset = 0;
-  ConventionalWallPlane(settings_.container, wall, n, offset);
+  const WallPlane plane = BoxWall(settings_.container, wall);
+  const Vec3& n = plane.normal;
+  const double offset = plane.offset;
   const RigidPath& path = bodies_[i].path;
   const Pose pose = path.PoseAt(t);
   const ConvexPolyhedron& polyhedron = *ShapeOf(i).polyhedron;

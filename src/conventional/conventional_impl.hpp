@@ -14,6 +14,7 @@
 #include "motion/rigid_path.hpp"
 #include "sparsedyn/conventional.hpp"
 #include "sparsedyn/narrow/closest_features.hpp"
+#include "world/box_walls.hpp"
 
 namespace sparsedyn {
 
@@ -99,9 +100,5 @@ class ConventionalWorld::Impl {
     stats_.max_penetration = std::max(stats_.max_penetration, -gap);
   }
 };
-
-/// Inward unit normal n and offset d of wall `wall` (0..5 = -x,+x,-y,+y,-z,+z) of a box: a point
-/// x is inside when n.x >= d.
-void ConventionalWallPlane(const Container& box, int wall, Vec3& normal, double& offset);
 
 }  // namespace sparsedyn

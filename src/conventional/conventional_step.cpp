@@ -135,9 +135,9 @@ std::optional<ConventionalWorld::Impl::Candidate> ConventionalWorld::Impl::Locat
 
 std::optional<ConventionalWorld::Impl::Candidate> ConventionalWorld::Impl::LocateWall(
     std::uint32_t i, int wall, double t0, double t1) {
-  Vec3 n;
-  double offset = 0;
-  ConventionalWallPlane(settings_.container, wall, n, offset);
+  const WallPlane plane = BoxWall(settings_.container, wall);
+  const Vec3& n = plane.normal;
+  const double offset = plane.offset;
   if (n.dot(bodies_[i].path.centre.PositionAt(t1)) - offset > bodies_[i].radius) {
     return std::nullopt;  // the bounding sphere is clear of the wall
   }

@@ -1,44 +1,22 @@
 // SPDX-License-Identifier: MIT
 // The ConventionalWorld's API: settings and body checks, the step loop, energy and momentum.
 #include <cmath>
-#include <sstream>
 #include <string>
 
+#include "base/format.hpp"
 #include "conventional/conventional_impl.hpp"
+#include "world/body_checks.hpp"
 
 namespace sparsedyn {
 namespace {
 
-std::string Format(double x) {
-  std::ostringstream out;
-  out.precision(17);
-  out << x;
-  return out.str();
-}
-
-// A body definition on its own: the checks of World::AddBody that apply to polyhedra.
-Status CheckBody(const BodyDef& def, const std::string& body) {
+// A body definition on its own: the World's checks of its values, and what the conventional
+// method simulates (polyhedra on exact paths).
+Status CheckBody(const BodyDef& def, std::size_t index, const std::string& body) {
   if (def.shape == nullptr) {
     return Error{body + "the conventional method simulates polyhedra only (no shape given)"};
   }
-  if (!std::isfinite(def.mass) || def.mass <= 0) {
-    return Error{body + "mass must be finite and > 0, got " + Format(def.mass)};
-  }
-  if (!std::isfinite(def.restitution) || def.restitution < 0 || def.restitution > 1) {
-    return Error{body + "restitution must be in [0, 1], got " + Format(def.restitution)};
-  }
-  if (!std::isfinite(def.friction) || def.friction < 0) {
-    return Error{body + "friction must be finite and >= 0, got " + Format(def.friction)};
-  }
-  const Eigen::Vector4d q = def.orientation.coeffs();
-  if (!q.allFinite() || std::abs(q.norm() - 1.0) > 1e-6) {
-    return Error{body + "orientation must be a finite unit quaternion, got norm " +
-                 Format(q.norm())};
-  }
-  if (!def.position.allFinite() || !def.velocity.allFinite() || !def.angular_velocity.allFinite() ||
-      !def.thrust.allFinite()) {
-    return Error{body + "position, velocity, angular_velocity and thrust must be finite"};
-  }
+  if (std::optional<Error> error = CheckBodyValues(def, index)) return *error;
   if (!def.envelope.IsZero()) {
     return Error{body + "envelopes are for spheres; a polyhedron's path is exact"};
   }
@@ -47,23 +25,11 @@ Status CheckBody(const BodyDef& def, const std::string& body) {
 
 }  // namespace
 
-void ConventionalWallPlane(const Container& box, int wall, Vec3& normal, double& offset) {
-  const int axis = wall / 2;
-  normal = Vec3::Zero();
-  if (wall % 2 == 0) {
-    normal[axis] = 1.0;  // the low wall: inside is x >= lo
-    offset = box.lo[axis];
-  } else {
-    normal[axis] = -1.0;  // the high wall: inside is -x >= -hi
-    offset = -box.hi[axis];
-  }
-}
-
 Status ConventionalWorld::CheckSettings(const WorldSettings& settings,
                                         const ConventionalSettings& conventional) {
   if (!std::isfinite(conventional.dt) || conventional.dt <= 0) {
     return Error{"the conventional method needs a time step dt > 0, got " +
-                 Format(conventional.dt)};
+                 FormatExact(conventional.dt)};
   }
   if (conventional.digits < 0 || conventional.digits > 15) {
     return Error{"digits must be in [0, 15], got " + std::to_string(conventional.digits)};
@@ -79,7 +45,7 @@ Result<BodyId> ConventionalWorld::Impl::AddBody(const BodyDef& def) {
   const auto index = static_cast<std::uint32_t>(bodies_.size());
   const std::string body = "body " + std::to_string(index) + ": ";
   if (started_) return Error{body + "bodies are added before the first AdvanceTo"};
-  if (Status ok = CheckBody(def, body); !ok) return ok.error();
+  if (Status ok = CheckBody(def, index, body); !ok) return ok.error();
 
   // The shape, placed by its centroid and shared by the bodies that share the given pointer.
   std::uint32_t shape = 0;
@@ -117,9 +83,9 @@ Result<BodyId> ConventionalWorld::Impl::AddBody(const BodyDef& def) {
   const Pose pose = b.path.PoseAt(now_);
   const ConvexPolyhedron& polyhedron = *shapes_[shape].polyhedron;
   for (int w = 0; w < 6 && Walled(); ++w) {
-    Vec3 n;
-    double offset = 0;
-    ConventionalWallPlane(settings_.container, w, n, offset);
+    const WallPlane plane = BoxWall(settings_.container, w);
+    const Vec3& n = plane.normal;
+    const double offset = plane.offset;
     const Vec3 n_B = pose.rotation.conjugate() * n;
     const double gap =
         n.dot(pose.ToWorld(polyhedron.vertex(polyhedron.SupportVertex(-n_B)))) - offset;

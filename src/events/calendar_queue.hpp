@@ -8,8 +8,8 @@
 #include "events/event.hpp"
 #include "events/heap_queue.hpp"
 #include "math/branchless.hpp"
-#include "math/huge_pages.hpp"
-#include "math/prefetch.hpp"
+#include "base/huge_pages.hpp"
+#include "base/prefetch.hpp"
 #include "sparsedyn/assert.hpp"
 
 namespace sparsedyn {

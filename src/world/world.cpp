@@ -1,428 +1,167 @@
 // SPDX-License-Identifier: MIT
+// The World's API: adding bodies, the start, states, energies and momenta, and the forwarding
+// from World to its Impl.
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <sstream>
 
-#include "math/branchless.hpp"
-#include "world/overlap_index.hpp"
 #include "world/world_impl.hpp"
 
 namespace sparsedyn {
-namespace {
-
-std::string Format(double x) {
-  std::ostringstream out;
-  out.precision(17);
-  out << x;
-  return out.str();
-}
-
-// Checks one body definition in isolation; the message names the body index and the field.
-std::optional<Error> CheckDefinition(const BodyDef& def, std::size_t index) {
-  const std::string body = "body " + std::to_string(index) + ": ";
-  if (!std::isfinite(def.radius) || def.radius <= 0) {
-    return Error{body + "radius must be finite and > 0, got " + Format(def.radius)};
-  }
-  if (!std::isfinite(def.mass) || def.mass <= 0) {
-    return Error{body + "mass must be finite and > 0, got " + Format(def.mass)};
-  }
-  if (!std::isfinite(def.restitution) || def.restitution < 0 || def.restitution > 1) {
-    return Error{body + "restitution must be in [0, 1], got " + Format(def.restitution)};
-  }
-  if (!std::isfinite(def.friction) || def.friction < 0) {
-    return Error{body + "friction must be finite and >= 0, got " + Format(def.friction)};
-  }
-  const Eigen::Vector4d q = def.orientation.coeffs();
-  if (!q.allFinite() || std::abs(q.norm() - 1.0) > 1e-6) {
-    return Error{body + "orientation must be a finite unit quaternion, got norm " +
-                 Format(q.norm())};
-  }
-  const struct {
-    const char* name;
-    const Vec3& value;
-  } vectors[] = {{"position", def.position},
-                 {"velocity", def.velocity},
-                 {"angular_velocity", def.angular_velocity},
-                 {"thrust", def.thrust}};
-  for (const auto& [name, value] : vectors) {
-    for (int k = 0; k < 3; ++k) {
-      if (!std::isfinite(value[k])) {
-        return Error{body + name + "[" + std::to_string(k) + "] must be finite, got " +
-                     Format(value[k])};
-      }
-    }
-  }
-  const double envelope[] = {def.envelope.e0, def.envelope.e1, def.envelope.e2};
-  for (int k = 0; k < 3; ++k) {
-    if (!std::isfinite(envelope[k]) || envelope[k] < 0) {
-      return Error{body + "envelope.e" + std::to_string(k) + " must be finite and >= 0, got " +
-                   Format(envelope[k])};
-    }
-  }
-  return std::nullopt;
-}
-
-}  // namespace
-
-WallPlane BoxWall(const Container& box, int wall) {
-  const int axis = wall / 2;
-  Vec3 n = Vec3::Zero();
-  if (wall % 2 == 0) {
-    n[axis] = 1.0;  // the low wall: inside is x >= lo
-    return {n, box.lo[axis]};
-  }
-  n[axis] = -1.0;  // the high wall: inside is -x >= -hi
-  return {n, -box.hi[axis]};
-}
 
 const char* EventKindName(int k) { return kEventKindNames.at(static_cast<std::size_t>(k)).data(); }
 
 World::Impl::Impl(const WorldSettings& settings)
-    : settings_(settings),
-      period_(settings.container.kind == Container::Kind::kPeriodicBox
-                  ? Vec3(settings.container.hi - settings.container.lo)
-                  : Vec3::Zero()),
-      periodic_(settings.container.kind == Container::Kind::kPeriodicBox),
-      uniform_acceleration_(settings.gravity),
-      overlap_index_(settings.container.lo, period_) {}
-
-Vec3 World::Impl::WrapIntoBox(Vec3 p) const {
-  if (!periodic_) return p;
-  const Vec3& lo = settings_.container.lo;
-  for (int k = 0; k < 3; ++k) p[k] -= period_[k] * std::floor((p[k] - lo[k]) / period_[k]);
-  return p;
-}
-
-std::optional<std::uint32_t> World::Impl::FindOverlap(const Vec3& p, double radius) const {
-  auto overlaps = [&](const Vec3& q, double r) {
-    const Vec3 d = MinimumImage(q - p);
-    const double reach = radius + r;
-    return d.squaredNorm() < reach * reach * (1 - 1e-12);
-  };
-  std::optional<std::uint32_t> found;
-  if (!started_) {
-    // Before the start every body is still at its initial position: use the spatial hash.
-    overlap_index_.ForEachNear(p, radius, [&](std::uint32_t j, const Vec3& q, double r) {
-      if (overlaps(q, r) && (!found || j < *found)) found = j;
-    });
-    return found;
-  }
-  // Bodies added while running (rare) are compared with every body at the current time.
-  for (std::uint32_t j = 0; j < starts_.size(); ++j) {
-    if (overlaps(PathOf(j).PositionAt(now_), Radius(j))) return public_of_[j];
-  }
-  return std::nullopt;
+    : core_(settings),
+      detailed_(core_, sparse_),
+      sparse_(core_, detailed_.engagements()),
+      changes_(core_, sparse_),
+      spheres_(core_, sparse_, detailed_, changes_),
+      polyhedra_(core_, sparse_, detailed_, changes_),
+      walls_(core_, sparse_, detailed_, changes_),
+      memory_(core_, sparse_, detailed_),
+      look_ahead_(core_.bodies.paths, sparse_),
+      admission_(core_) {
+  sparse_.SetWalls(&walls_);
+  detailed_.SetModels(&spheres_, &polyhedra_);
 }
 
 Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
-  const std::size_t index = starts_.size();
-  if (std::optional<Error> error = CheckDefinition(def, index)) return *error;
-  const std::string body = "body " + std::to_string(index) + ": ";
-  const bool polyhedron = def.shape != nullptr;
-  if (index > 0 && polyhedron != polyhedra_) {
-    return Error{body + "a World holds spheres or polyhedra, not both (this body is a " +
-                 (polyhedron ? "polyhedron" : "sphere") + ", body 0 is not)"};
-  }
-  if (polyhedron && !def.envelope.IsZero()) {
-    return Error{body + "envelopes are for spheres; a polyhedron's path is exact"};
-  }
-  if (polyhedron && started_) {
-    return Error{body + "polyhedra are added before the first AdvanceTo"};
-  }
-  std::uint32_t shape = kNoIndex;
-  if (polyhedron) {
-    Result<std::uint32_t> added = AddShape(def.shape);
-    if (!added) return Error{body + added.error().message};
-    shape = *added;
-  }
-  // A polyhedron's element sphere is its bounding sphere about the centroid.
-  const double radius = polyhedron ? shapes_[shape].polyhedron->bounding_radius() : def.radius;
-
-  // Inside the container.
-  const Container& box = settings_.container;
-  const auto sphere_inside = [&] {
-    return ((def.position.array() - radius) >= box.lo.array()).all() &&
-           ((def.position.array() + radius) <= box.hi.array()).all();
-  };
-  if (polyhedron && box.kind == Container::Kind::kWalledBox && !sphere_inside()) {
-    // Only a body whose bounding sphere crosses a wall can have a vertex outside.
-    const ConvexPolyhedron& poly = *shapes_[shape].polyhedron;
-    const Eigen::Matrix3d rotation = def.orientation.normalized().toRotationMatrix();
-    for (int v = 0; v < poly.vertex_count(); ++v) {
-      const Vec3 x = rotation * poly.vertex(v) + def.position;
-      for (int k = 0; k < 3; ++k) {
-        if (x[k] < box.lo[k] || x[k] > box.hi[k]) {
-          return Error{body + "vertex " + std::to_string(v) + " lies outside the walled box " +
-                       "on axis " + std::to_string(k) + " (" + Format(x[k]) + " not in [" +
-                       Format(box.lo[k]) + ", " + Format(box.hi[k]) + "])"};
-        }
-      }
-    }
-  } else if (!polyhedron && box.kind == Container::Kind::kWalledBox) {
-    for (int k = 0; k < 3; ++k) {
-      if (def.position[k] - radius < box.lo[k] || def.position[k] + radius > box.hi[k]) {
-        return Error{body + "position[" + std::to_string(k) + "] = " + Format(def.position[k]) +
-                     " puts the sphere (radius " + Format(radius) + ") outside the walled box [" +
-                     Format(box.lo[k]) + ", " + Format(box.hi[k]) + "]"};
-      }
-    }
-  } else if (box.kind == Container::Kind::kPeriodicBox) {
-    for (int k = 0; k < 3; ++k) {
-      if (def.position[k] < box.lo[k] || def.position[k] >= box.hi[k]) {
-        return Error{body + "position[" + std::to_string(k) + "] = " + Format(def.position[k]) +
-                     " is outside the periodic box [" + Format(box.lo[k]) + ", " +
-                     Format(box.hi[k]) + ")"};
-      }
-      if (2 * radius >= 0.5 * (box.hi[k] - box.lo[k])) {
-        return Error{body + "radius " + Format(radius) +
-                     " is too large for the periodic box (diameter must be < half the box)"};
-      }
-    }
-  }
-  if (polyhedron) {
-    double distance = 0;
-    if (std::optional<std::uint32_t> other = FindPolyhedronOverlap(def, shape, distance)) {
-      return Error{body + "touches or overlaps body " + std::to_string(*other) +
-                   " at the start (distance " + Format(distance) + ")"};
-    }
-  } else if (std::optional<std::uint32_t> other = FindOverlap(def.position, def.radius)) {
-    return Error{body + "overlaps body " + std::to_string(*other) +
-                 " at the start (t = " + Format(now_) + ")"};
-  }
+  BodyStore& bodies = core_.bodies;
+  const std::uint32_t index = bodies.Size();
+  Result<Admission::Accepted> accepted = admission_.Check(def, index, started_);
+  if (!accepted) return accepted.error();
 
   // Accepted: from here on nothing can fail.
-  starts_.push_back(ElementStart{PathStart{def.position, def.velocity, now_}, GridLinks{}});
-  const Vec3 acceleration = settings_.gravity + def.thrust;
-  if (!own_accelerations_ && acceleration != uniform_acceleration_) {
-    own_accelerations_ = true;  // the first body with a thrust of its own
-    acceleration_.assign(index, uniform_acceleration_);
+  const double radius = accepted->radius;
+  const double now = core_.Now();
+  bodies.paths.Append(PathStart{def.position, def.velocity, now},
+                      core_.settings.gravity + def.thrust);
+  if (!started_) admission_.NoteAdded(def.position, radius);
+  bodies.materials.Append(Material{radius, 1.0 / def.mass, def.restitution, def.friction});
+  if (def.shape != nullptr) {
+    std::uint32_t shape = accepted->shape;
+    if (accepted->new_shape) shape = bodies.rigid.shapes().Insert(std::move(*accepted->new_shape));
+    bodies.rigid.Append(shape, def.orientation.normalized(), def.angular_velocity);
+    bodies.rigid.SetSpinRadius(index, bodies.SpinRadiusOf(index));
   }
-  if (own_accelerations_) acceleration_.push_back(acceleration);
-  if (!held_by_.empty()) {
-    held_by_.push_back(0);
-    free_acceleration_.push_back(acceleration);
-  }
-  if (!started_) overlap_index_.Add(def.position, radius);
-  const std::array<double, 4> material{radius, 1.0 / def.mass, def.restitution, def.friction};
-  const auto [found, added] =
-      material_index_.try_emplace(material, static_cast<std::uint32_t>(materials_.size()));
-  if (added) materials_.push_back(Material{material[0], material[1], material[2], material[3]});
-  material_.push_back(found->second);
-  if (polyhedron) {
-    polyhedra_ = true;
-    shape_.push_back(shape);
-    q0_.push_back(def.orientation.normalized());
-    omega_.push_back(def.angular_velocity);
-    spin_radius_.push_back(SpinRadiusOf(static_cast<std::uint32_t>(index)));
-  }
-  if (!def.envelope.IsZero() && !has_envelopes_) {
-    has_envelopes_ = true;
-    envelope_.resize(index);
-  }
-  if (has_envelopes_) envelope_.push_back(def.envelope);
-  public_of_.push_back(static_cast<std::uint32_t>(index));
-  internal_of_.push_back(static_cast<std::uint32_t>(index));
-  queue_.Resize(index + 1);  // the element's slot and prediction
+  bodies.envelopes.Append(index, def.envelope);
+  bodies.ids.Append(index);
+  sparse_.queue().Resize(index + 1);  // the element's slot and prediction
   const bool larger = radius > max_radius_;
   max_radius_ = std::max(max_radius_, radius);
   if (started_) {
     // A bigger body or the first envelope can change the broad phase, and the first body off
     // straight lines (a thrust of its own, an envelope, a polyhedron) ends the fast paths that
     // assume them: rebuild.
-    if (larger || (has_envelopes_ && grid_) || (straight_lines_ && !StraightLines())) {
+    if (larger || (bodies.envelopes.Any() && sparse_.grid()) ||
+        (bodies.paths.StraightLines() && !bodies.AllOnStraightLines())) {
       Start();
     } else {
-      const auto i = static_cast<std::uint32_t>(index);
-      ShareStarts();  // starts_ may have moved
-      if (grid_) grid_->Insert(i, def.position);
-      if (all_pairs_) all_pairs_->Insert(i, def.position);
-      SetReorderPeriod();
-      PredictFull(i);
+      sparse_.AddElement(index);
+      memory_.SetPeriod();
     }
   }
-  return BodyId{static_cast<std::uint32_t>(index), 0};
+  return BodyId{index, 0};
 }
 
 void World::Impl::Start() {
   started_ = true;
-  overlap_index_.Clear();
-  const auto n = static_cast<std::uint32_t>(starts_.size());
-  const Container& box = settings_.container;
-  grid_.reset();
-  all_pairs_.reset();
-  queue_.Clear();
-  queue_.ShrinkToFit();  // one slot per element, grown one by one by AddBody
-  engagement_queue_.Clear();
-  engagements_.Clear();
+  admission_.Clear();
+  BodyStore& bodies = core_.bodies;
+  const auto n = bodies.Size();
+  const double now = core_.Now();
+  ElementQueue& queue = sparse_.queue();
+  queue.Clear();
+  queue.ShrinkToFit();  // one slot per element, grown one by one by AddBody
+  detailed_.Clear();
   // A restart (AddBody while running) predicts every element afresh below: the old predictions
   // go with the cleared queue, which holds no times for them (Reorder would carry them over).
   // The versions stay, as they count each body's path changes.
   for (std::uint32_t i = 0; i < n; ++i) {
-    const std::uint32_t version = PredictionOf(i).version;
-    PredictionOf(i) = Prediction{};
-    PredictionOf(i).version = version;
+    const std::uint32_t version = sparse_.PredictionOf(i).version;
+    sparse_.PredictionOf(i) = Prediction{};
+    sparse_.PredictionOf(i).version = version;
   }
 
   // Rebase every path at the current time so that cells and predictions start from now.
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (polyhedra_) q0_[i] = RigidPathOf(i).OrientationAt(now_).normalized();
-    const Path path = PathOf(i).RebasedAt(now_);
-    SetStart(i, PathStart{WrapIntoBox(path.p0), path.v0, path.t0});
+    if (bodies.rigid.Any()) {
+      bodies.rigid.SetOrientation0(i, bodies.RigidPathOf(i).OrientationAt(now).normalized());
+    }
+    const Path path = bodies.paths.PathOf(i).RebasedAt(now);
+    bodies.paths.SetStart(i, PathStart{core_.WrapIntoBox(path.p0), path.v0, path.t0});
   }
 
-  straight_lines_ = StraightLines();
-  // The batch pair test (TestGathered) while the elements' data fit in the caches: it trades
-  // mispredicted branches for instructions, a gain when the data are at hand (N = 10^4: +30%
-  // collisions per CPU s) and a loss when each pair waits for main memory, where the branching
-  // walk lets the processor run ahead to more misses (N = 10^6: -7%; 10^5: even). See
-  // docs/benchmarks.md, ninth measurement.
-  batch_tests_ = straight_lines_ && n <= kBatchTestMaxElements;
-
-  // The grid needs a box and bounded element radii (an envelope grows without bound).
-  const bool boxed = box.kind != Container::Kind::kOpen;
-  if (settings_.broadphase == Broadphase::kGrid && boxed && !has_envelopes_ && n > 0) {
-    Grid::Config config;
-    config.lo = box.lo;
-    config.hi = box.hi;
-    config.periodic = box.kind == Container::Kind::kPeriodicBox;
-    config.min_cell_size = 2 * max_radius_;
-    const Vec3 length = box.hi - box.lo;
-    const double volume = length.prod();
-    config.target_cell_size =
-        std::cbrt(volume / (std::max(settings_.grid_cells_per_body, 1e-6) * n));
-    if (Grid::Feasible(config)) grid_.emplace(config, n);
-  }
-  ShareStarts();
-  if (!grid_) {
-    AllPairs::Config config;
-    config.lo = box.lo;
-    config.hi = box.hi;
-    config.periodic = box.kind == Container::Kind::kPeriodicBox;
-    all_pairs_.emplace(config, n);
-  }
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (grid_) grid_->Insert(i, starts_[i].p0);
-    if (all_pairs_) all_pairs_->Insert(i, starts_[i].p0);
-  }
-  // The look-ahead (FetchAhead) once the per-element data outgrow the caches: at N = 10^6 +14%
-  // collisions per CPU s, at 10^5 +14%, at 6x10^4 about +10%; at 3x10^4 -5% and at 10^4 -7%,
-  // where the data are at hand anyway (docs/benchmarks.md, eleventh measurement).
-  fetch_ahead_ = straight_lines_ && grid_ && n >= kFetchAheadMinElements;
-  linear_finish_ =
-      straight_lines_ && grid_ && settings_.container.kind != Container::Kind::kWalledBox;
-  if (grid_) Reorder();  // start in spatial order
-  events_since_reorder_ = 0;
-  SetReorderPeriod();
-  if (polyhedra_) EngageOverlappingAtStart();
-  for (std::uint32_t i = 0; i < n; ++i) PredictFull(i);
+  bodies.paths.SetStraightLines(bodies.AllOnStraightLines());
+  sparse_.Build(max_radius_);
+  if (sparse_.grid()) memory_.Reorder();  // start in spatial order
+  memory_.Restart();
+  if (bodies.rigid.Any()) detailed_.EngageOverlapping();
+  for (std::uint32_t i = 0; i < n; ++i) sparse_.PredictFull(i);
 }
 
 BodyState World::Impl::StateAt(std::uint32_t i, double t) const {
-  const Path& path = PathOf(i);
-  BodyState state{
-      WrapIntoBox(path.PositionAt(t)), path.VelocityAt(t), path.a, Radius(i), 1.0 / InvMass(i),
-      PredictionOf(i).version};
-  if (polyhedra_) {
-    state.orientation = RigidPathOf(i).OrientationAt(t).normalized();
-    state.angular_velocity = omega_[i];
+  const BodyStore& bodies = core_.bodies;
+  const Path& path = bodies.paths.PathOf(i);
+  BodyState state{core_.WrapIntoBox(path.PositionAt(t)),
+                  path.VelocityAt(t),
+                  path.a,
+                  bodies.materials.Radius(i),
+                  1.0 / bodies.materials.InvMass(i),
+                  sparse_.PredictionOf(i).version};
+  if (bodies.rigid.Any()) {
+    state.orientation = bodies.RigidPathOf(i).OrientationAt(t).normalized();
+    state.angular_velocity = bodies.rigid.Omega(i);
   }
   return state;
 }
 
 double World::Impl::KineticEnergy() const {
-  // Summed in public order: the result does not depend on the memory order (Reorder).
+  // Summed in public order: the result does not depend on the memory order.
+  const BodyStore& bodies = core_.bodies;
+  const double now = core_.Now();
   double energy = 0;
-  for (const std::uint32_t i : internal_of_) {
-    energy += 0.5 / InvMass(i) * PathOf(i).VelocityAt(now_).squaredNorm();
-    if (polyhedra_) {
-      const Eigen::Matrix3d r = RigidPathOf(i).OrientationAt(now_).toRotationMatrix();
-      const Vec3 w_B = r.transpose() * omega_[i];  // 1/2 w.I w in body axes
-      energy += 0.5 / InvMass(i) * w_B.dot(ShapeOf(i).unit_inertia * w_B);
+  for (const std::uint32_t i : bodies.ids.InPublicOrder()) {
+    const double inv_mass = bodies.materials.InvMass(i);
+    energy += 0.5 / inv_mass * bodies.paths.PathOf(i).VelocityAt(now).squaredNorm();
+    if (bodies.rigid.Any()) {
+      const Eigen::Matrix3d r = bodies.RigidPathOf(i).OrientationAt(now).toRotationMatrix();
+      const Vec3 w_B = r.transpose() * bodies.rigid.Omega(i);  // 1/2 w.I w in body axes
+      energy += 0.5 / inv_mass * w_B.dot(bodies.rigid.ShapeOf(i).unit_inertia * w_B);
     }
   }
   return energy;
 }
 
 Vec3 World::Impl::AngularMomentum() const {
+  const BodyStore& bodies = core_.bodies;
+  const double now = core_.Now();
   Vec3 momentum = Vec3::Zero();
-  for (const std::uint32_t i : internal_of_) {
-    const Path path = PathOf(i);
-    momentum += path.PositionAt(now_).cross(path.VelocityAt(now_)) / InvMass(i);
-    if (polyhedra_) {
-      const Eigen::Matrix3d r = RigidPathOf(i).OrientationAt(now_).toRotationMatrix();
-      momentum += r * (ShapeOf(i).unit_inertia * (r.transpose() * omega_[i])) / InvMass(i);
+  for (const std::uint32_t i : bodies.ids.InPublicOrder()) {
+    const Path path = bodies.paths.PathOf(i);
+    const double inv_mass = bodies.materials.InvMass(i);
+    momentum += path.PositionAt(now).cross(path.VelocityAt(now)) / inv_mass;
+    if (bodies.rigid.Any()) {
+      const Eigen::Matrix3d r = bodies.RigidPathOf(i).OrientationAt(now).toRotationMatrix();
+      momentum += r * (bodies.rigid.ShapeOf(i).unit_inertia * (r.transpose() * bodies.rigid.Omega(i))) /
+                  inv_mass;
     }
   }
   return momentum;
 }
 
 Vec3 World::Impl::Momentum() const {
+  const BodyStore& bodies = core_.bodies;
   Vec3 momentum = Vec3::Zero();
-  for (const std::uint32_t i : internal_of_) {
-    momentum += PathOf(i).VelocityAt(now_) / InvMass(i);
+  for (const std::uint32_t i : bodies.ids.InPublicOrder()) {
+    momentum += bodies.paths.PathOf(i).VelocityAt(core_.Now()) / bodies.materials.InvMass(i);
   }
   return momentum;
 }
 
-Status World::Impl::Validate() const {
-  if (polyhedra_) return ValidatePolyhedra();
-  const auto n = static_cast<std::uint32_t>(starts_.size());
-  const double tolerance = settings_.contact_tolerance;
-  auto check_pair = [&](std::uint32_t i, std::uint32_t j) -> std::optional<Error> {
-    const Vec3 d = MinimumImage(PathOf(j).PositionAt(now_) - PathOf(i).PositionAt(now_));
-    const double reach = Radius(i) + Radius(j);
-    const double gap = d.norm() - reach;
-    if (gap < -tolerance * reach) {
-      return Error{"bodies " + std::to_string(public_of_[i]) + " and " +
-                   std::to_string(public_of_[j]) + " overlap by " + Format(-gap) +
-                   " at t = " + Format(now_)};
-    }
-    return std::nullopt;
-  };
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (grid_) {
-      std::optional<Error> error;
-      grid_->ForEachNeighbor(i, [&](std::uint32_t j, const Vec3&) {
-        if (!error && j > i) error = check_pair(i, j);
-      });
-      if (error) return *error;
-    } else {
-      for (std::uint32_t j = i + 1; j < n; ++j) {
-        if (std::optional<Error> error = check_pair(i, j)) return *error;
-      }
-    }
-    if (settings_.container.kind == Container::Kind::kWalledBox) {
-      const Vec3 p = PathOf(i).PositionAt(now_);
-      for (int w = 0; w < 6; ++w) {
-        const WallPlane plane = BoxWall(settings_.container, w);
-        const double gap = plane.normal.dot(p) - plane.offset - Radius(i);
-        if (gap < -tolerance * Radius(i)) {
-          return Error{"body " + std::to_string(public_of_[i]) + " is " + Format(-gap) +
-                       " beyond wall " + std::to_string(w) + " at t = " + Format(now_)};
-        }
-      }
-    }
-  }
-  return Status::Ok();
-}
-
 std::size_t World::Impl::MemoryBytes() const {
-  // A std::map node holds its value and about four pointers.
-  std::size_t bytes =
-      starts_.capacity() * sizeof(ElementStart) + acceleration_.capacity() * sizeof(Vec3) +
-      held_by_.capacity() + free_acceleration_.capacity() * sizeof(Vec3) +
-      materials_.capacity() * sizeof(Material) +
-      material_index_.size() * (sizeof(std::array<double, 4>) + 40) +
-      material_.capacity() * sizeof(std::uint32_t) + envelope_.capacity() * sizeof(Envelope) +
-      (public_of_.capacity() + internal_of_.capacity()) * sizeof(std::uint32_t) +
-      queue_.MemoryBytes() + engagement_queue_.MemoryBytes() +
-      gathered_.capacity() * sizeof(std::uint32_t);
-  bytes += shape_.capacity() * sizeof(std::uint32_t) + q0_.capacity() * sizeof(Eigen::Quaterniond) +
-           omega_.capacity() * sizeof(Vec3) + spin_radius_.capacity() * sizeof(double);
-  if (grid_) bytes += grid_->MemoryBytes();
-  if (all_pairs_) bytes += all_pairs_->MemoryBytes();
-  return bytes;
+  return core_.bodies.MemoryBytes() + sparse_.MemoryBytes() + detailed_.MemoryBytes();
 }
 
 // --- World: thin forwarding to Impl ---
@@ -436,24 +175,24 @@ Result<BodyId> World::AddBody(const BodyDef& def) { return impl_->AddBody(def); 
 Status World::AdvanceTo(double t) { return impl_->AdvanceTo(t); }
 BodyState World::StateAt(BodyId id, double t) const {
   SPARSEDYN_ASSERT(IsValid(id), "StateAt: invalid BodyId");
-  return impl_->StateAt(impl_->internal_of_[id.index], t);
+  return impl_->StateAt(impl_->core_.bodies.ids.InternalOf(id.index), t);
 }
-double World::Time() const { return impl_->now_; }
-std::size_t World::BodyCount() const { return impl_->starts_.size(); }
-bool World::IsValid(BodyId id) const { return id.index < impl_->starts_.size(); }
+double World::Time() const { return impl_->core_.Now(); }
+std::size_t World::BodyCount() const { return impl_->core_.bodies.Size(); }
+bool World::IsValid(BodyId id) const { return id.index < impl_->core_.bodies.Size(); }
 BodyId World::IdOf(std::uint32_t index) const { return BodyId{index, 0}; }
 void World::OnCollision(std::function<void(const CollisionEvent&)> callback) {
-  impl_->on_collision_ = std::move(callback);
+  impl_->core_.observers.OnCollision(std::move(callback));
 }
 void World::OnSegment(std::function<void(const MotionSegment&)> callback) {
-  impl_->on_segment_ = std::move(callback);
+  impl_->core_.observers.OnSegment(std::move(callback));
 }
-const Statistics& World::Stats() const { return impl_->stats_; }
-const WorldSettings& World::Settings() const { return impl_->settings_; }
+const Statistics& World::Stats() const { return impl_->core_.observers.stats(); }
+const WorldSettings& World::Settings() const { return impl_->core_.settings; }
 double World::KineticEnergy() const { return impl_->KineticEnergy(); }
 Vec3 World::Momentum() const { return impl_->Momentum(); }
 Vec3 World::AngularMomentum() const { return impl_->AngularMomentum(); }
-double World::MaxPenetration() const { return impl_->max_penetration_; }
+double World::MaxPenetration() const { return impl_->core_.observers.MaxPenetration(); }
 Status World::Validate() const { return impl_->Validate(); }
 std::size_t World::MemoryBytes() const { return impl_->MemoryBytes(); }
 

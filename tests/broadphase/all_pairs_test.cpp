@@ -24,7 +24,7 @@ TEST(AllPairs, VisitsEveryOtherElementAtEveryImage) {
     all.Insert(2, Vec3::Zero());  // twice: still one member
     const std::size_t images = periodic ? 27 : 1;
     ASSERT_EQ(all.ImageShifts().size(), images);
-    // The documented order (World::Impl::ConsiderImages' slabs rely on it): x fastest.
+    // The documented order (MeetingScan::ConsiderImages' slabs rely on it): x fastest.
     for (std::size_t r = 0; r < images && periodic; ++r) {
       const Vec3 expected((static_cast<double>(r % 3) - 1) * 4,
                           (static_cast<double>(r / 3 % 3) - 1) * 5,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The huge-page allocator: large blocks start on a 2 MB boundary, small ones come from the usual
 // allocator, and a BigVector behaves as a std::vector through growth, copies and moves.
-#include "math/huge_pages.hpp"
+#include "base/huge_pages.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // AddBody's overlap index against brute force: every body within reach is offered, once, in
 // open, walled and periodic containers, with growing radii (rebuilds), coordinates on cell
 // boundaries and queries far larger than the cells.
-#include "world/overlap_index.hpp"
+#include "broadphase/overlap_index.hpp"
 
 #include <gtest/gtest.h>
 

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "world/world_impl.hpp"
+#include "math/event_time.hpp"
 
 namespace sparsedyn {
 namespace {

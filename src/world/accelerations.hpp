@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "sparsedyn/types.hpp"
+
+namespace sparsedyn {
+
+/// Each body's acceleration during its current segment. Gravity alone is one vector shared by
+/// every body (a gas on straight lines reads no per-body value) until some body has an
+/// acceleration of its own (a thrust, a wall's hold), when each body gets its own. Once a wall
+/// holds a body (docs/sparse-phase.md#coming-to-rest), the free acceleration (gravity plus
+/// thrust) each body returns to when released is kept beside it, with the walls that hold it.
+class Accelerations {
+ public:
+  explicit Accelerations(const Vec3& gravity) : uniform_(gravity) {}
+
+  /// Body i's acceleration in its current segment.
+  const Vec3& Of(std::uint32_t i) const { return own_ ? per_body_[i] : uniform_; }
+  /// Whether every body has the shared acceleration (UniformValue()).
+  bool Uniform() const { return !own_; }
+  const Vec3& UniformValue() const { return uniform_; }
+  /// Gravity plus body i's thrust: its acceleration unless a wall holds it.
+  Vec3 Free(std::uint32_t i) const {
+    if (!free_.empty()) return free_[i];
+    return Of(i);
+  }
+  /// Bit w: wall w holds body i (0 before the first hold).
+  std::uint8_t HeldBy(std::uint32_t i) const { return held_by_.empty() ? 0 : held_by_[i]; }
+  bool AnyHeld() const { return !held_by_.empty(); }
+
+  /// A new body (index size()) with the free acceleration `a`.
+  void Append(std::uint32_t index, const Vec3& a) {
+    if (!own_ && a != uniform_) {
+      own_ = true;  // the first body with an acceleration of its own
+      per_body_.assign(index, uniform_);
+    }
+    if (own_) per_body_.push_back(a);
+    if (!held_by_.empty()) {
+      held_by_.push_back(0);
+      free_.push_back(a);
+    }
+  }
+
+  /// Body i held by `walls` (bits, 0: released): its acceleration is the free one with the
+  /// components along the held walls' axes zeroed (the walls are axis-aligned: exact zeros,
+  /// so the gap stays as it is). Returns that acceleration.
+  Vec3 SetHeld(std::uint32_t i, std::uint8_t walls, std::size_t count) {
+    if (held_by_.empty()) {
+      // The first hold: every body gets its own acceleration, and its free one is kept.
+      if (!own_) per_body_.assign(count, uniform_);
+      own_ = true;
+      free_ = per_body_;
+      held_by_.assign(count, 0);
+    }
+    held_by_[i] = walls;
+    Vec3 a = free_[i];
+    for (int w = 0; w < 6; ++w) {
+      if ((walls >> w & 1u) != 0) a[w / 2] = 0.0;
+    }
+    per_body_[i] = a;
+    return a;
+  }
+
+  /// The largest free acceleration of any body (m/s^2).
+  double MaxFreeNorm(std::size_t count) const {
+    if (!own_) return uniform_.norm();
+    double most = 0.0;
+    for (std::uint32_t i = 0; i < count; ++i) most = std::max(most, Free(i).norm());
+    return most;
+  }
+
+  /// The bodies were renumbered: new body e is old body old_of_new[e].
+  template <typename PermuteFn>
+  void Permute(PermuteFn&& permute) {
+    if (own_) permute(per_body_);
+    if (!held_by_.empty()) {
+      permute(held_by_);
+      permute(free_);
+    }
+  }
+
+  std::size_t MemoryBytes() const {
+    return per_body_.capacity() * sizeof(Vec3) + held_by_.capacity() +
+           free_.capacity() * sizeof(Vec3);
+  }
+
+ private:
+  Vec3 uniform_;
+  bool own_ = false;
+  std::vector<Vec3> per_body_;      // once own_
+  std::vector<std::uint8_t> held_by_;  // once some wall held a body
+  std::vector<Vec3> free_;          // likewise
+};
+
+}  // namespace sparsedyn

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+#include "world/body_store.hpp"
+
+#include "narrow/advancement.hpp"
+
+namespace sparsedyn {
+
+double BodyStore::SpinRadiusOf(std::uint32_t i) const {
+  return narrow::SpinRadius(*rigid.ShapeOf(i).polyhedron, RigidPathOf(i));
+}
+
+void BodyStore::Permute(const std::vector<std::uint32_t>& old_of_new) {
+  const auto permute = [&old_of_new](auto& values) { PermuteVector(values, old_of_new); };
+  permute(paths.Records());
+  paths.accelerations().Permute(permute);
+  materials.Permute(permute);
+  rigid.Permute(permute);
+  envelopes.Permute(permute);
+  ids.Permute(permute);
+}
+
+std::size_t BodyStore::MemoryBytes() const {
+  return paths.MemoryBytes() + materials.MemoryBytes() + rigid.MemoryBytes() +
+         envelopes.MemoryBytes() + ids.MemoryBytes();
+}
+
+}  // namespace sparsedyn

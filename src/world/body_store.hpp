@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "motion/rigid_path.hpp"
+#include "sparse/mover.hpp"
+#include "sparsedyn/types.hpp"
+#include "sparsedyn/world.hpp"
+#include "world/body_ids.hpp"
+#include "world/body_materials.hpp"
+#include "world/element_paths.hpp"
+#include "world/rigid_bodies.hpp"
+
+namespace sparsedyn {
+
+/// The envelopes of the bodies (App. F): empty until some body has one.
+class Envelopes {
+ public:
+  bool Any() const { return any_; }
+  const Envelope& Of(std::uint32_t i) const { return of_[i]; }
+  void Append(std::uint32_t index, const Envelope& envelope) {
+    if (!envelope.IsZero() && !any_) {
+      any_ = true;
+      of_.resize(index);
+    }
+    if (any_) of_.push_back(envelope);
+  }
+  template <typename PermuteFn>
+  void Permute(PermuteFn&& permute) {
+    if (any_) permute(of_);
+  }
+  std::size_t MemoryBytes() const { return of_.capacity() * sizeof(Envelope); }
+
+ private:
+  bool any_ = false;
+  std::vector<Envelope> of_;
+};
+
+/// Every body's state between events, per element (structure of arrays): its path, material,
+/// rotation (polyhedra), envelope and public id. The parts that predict and handle events read
+/// it; the path changes (world/path_changes.hpp) write it.
+struct BodyStore {
+  explicit BodyStore(const WorldSettings& settings)
+      : paths(settings.gravity), rigid(settings.rotation_model) {}
+
+  std::uint32_t Size() const { return paths.Size(); }
+
+  /// Body i's element sphere (its envelope included) seen at time t.
+  Mover MoverOf(std::uint32_t i, double t) const {
+    if (envelopes.Any()) return MoverAt(paths.PathOf(i), materials.Radius(i), envelopes.Of(i), t);
+    return MoverAt(paths.PathOf(i), materials.Radius(i), t);
+  }
+  /// The body itself (its sphere without envelope) seen at time t.
+  Mover BodyMoverOf(std::uint32_t i, double t) const {
+    return MoverAt(paths.PathOf(i), materials.Radius(i), t);
+  }
+  /// Elements' spheres that meet become engaged and the detailed phase watches them.
+  bool EngagesOnMeet() const { return envelopes.Any() || rigid.Any(); }
+  /// Whether every element is a sphere without an envelope on a straight line.
+  bool AllOnStraightLines() const {
+    const Accelerations& a = paths.accelerations();
+    return !envelopes.Any() && !rigid.Any() && a.Uniform() && a.UniformValue().isZero(0.0);
+  }
+
+  RigidPath RigidPathOf(std::uint32_t i) const {
+    return RigidPath{paths.PathOf(i), rigid.Orientation0(i), rigid.Omega(i)};
+  }
+  /// Inverse inertia of body i in the world frame at orientation q.
+  Eigen::Matrix3d InvInertiaWorld(std::uint32_t i, const Eigen::Quaterniond& q) const {
+    const Eigen::Matrix3d r = q.toRotationMatrix();
+    return materials.InvMass(i) * r * rigid.ShapeOf(i).unit_inv_inertia * r.transpose();
+  }
+  /// narrow::SpinRadius of body i's current segment.
+  double SpinRadiusOf(std::uint32_t i) const;
+
+  /// Renumbers the elements: new element e is old element old_of_new[e].
+  void Permute(const std::vector<std::uint32_t>& old_of_new);
+  std::size_t MemoryBytes() const;
+
+  ElementPaths paths;
+  BodyMaterials materials;
+  RigidBodies rigid;
+  Envelopes envelopes;
+  BodyIds ids;
+};
+
+/// Reorders `values` so that new entry e is old entry old_of_new[e], with the exact capacity
+/// (a run's memory is part of its cost).
+template <typename Vector>
+void PermuteVector(Vector& values, const std::vector<std::uint32_t>& old_of_new) {
+  Vector permuted;
+  permuted.reserve(values.size());
+  for (const std::uint32_t old : old_of_new) permuted.push_back(values[old]);
+  values.swap(permuted);
+}
+
+}  // namespace sparsedyn

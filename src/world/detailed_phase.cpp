@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+#include "world/detailed_phase.hpp"
+
+#include "world/polyhedron_contacts.hpp"
+#include "world/sphere_contacts.hpp"
+
+namespace sparsedyn {
+
+PairKind DetailedPhase::KindOf(std::uint32_t /*a*/, std::uint32_t /*b*/) const {
+  // A World holds spheres or polyhedra, not both.
+  return core_.bodies.rigid.Any() ? PairKind::kPolyhedra : PairKind::kSpheres;
+}
+
+void DetailedPhase::Engage(std::uint32_t a, std::uint32_t b) {
+  if (engagements_.Engaged(a, b)) return;
+  const std::uint32_t k = engagements_.Add(a, b);
+  ++core_.observers.stats().engagements_started;
+  Predict(k);
+}
+
+void DetailedPhase::Predict(std::uint32_t k) {
+  const Engagements::Engagement& e = engagements_[k];
+  switch (KindOf(e.a, e.b)) {
+    case PairKind::kSpheres:
+      spheres_->PredictEngagement(k);
+      break;
+    case PairKind::kPolyhedra:
+      polyhedra_->PredictEngagement(k);
+      break;
+  }
+}
+
+void DetailedPhase::Handle(std::uint32_t k) {
+  const Engagements::Engagement& e = engagements_[k];
+  switch (KindOf(e.a, e.b)) {
+    case PairKind::kSpheres:
+      spheres_->HandleEngagement(k);
+      break;
+    case PairKind::kPolyhedra:
+      polyhedra_->HandleEngagement(k);
+      break;
+  }
+}
+
+void DetailedPhase::Schedule(std::uint32_t k, double time) {
+  if (time == kInfinity) {
+    queue_.Erase(k);
+  } else {
+    queue_.Set(k, time, EventKind::kEngagement);
+  }
+}
+
+void DetailedPhase::End(std::uint32_t k) {
+  const std::uint32_t a = engagements_[k].a;
+  queue_.Erase(k);
+  engagements_.Remove(k);
+  ++core_.observers.stats().engagements_ended;
+  sparse_.PredictFull(a);
+}
+
+void DetailedPhase::PredictEngagementsOf(std::uint32_t i, std::uint32_t done_partner) {
+  if (!core_.bodies.EngagesOnMeet() || !engagements_.HasAny(i)) return;
+  for (const std::uint32_t k : engagements_.Of(i)) {
+    const Engagements::Engagement& e = engagements_[k];
+    if (e.a != done_partner && e.b != done_partner) Predict(k);
+  }
+}
+
+void DetailedPhase::EngageOverlapping() {
+  const ElementPaths& paths = core_.bodies.paths;
+  const BodyMaterials& materials = core_.bodies.materials;
+  for (std::uint32_t i = 0; i < paths.Size(); ++i) {
+    sparse_.ForEachNeighbor(i, [&](std::uint32_t j, const Vec3&) {
+      if (j <= i || engagements_.Engaged(i, j)) return;
+      const Vec3 d = core_.MinimumImage(paths.Start(j).p0 - paths.Start(i).p0);
+      const double reach = materials.Radius(i) + materials.Radius(j);
+      if (d.squaredNorm() >= reach * reach) return;
+      const std::uint32_t k = engagements_.Add(i, j);
+      ++core_.observers.stats().engagements_started;
+      Predict(k);
+    });
+  }
+}
+
+void DetailedPhase::Clear() {
+  queue_.Clear();
+  engagements_.Clear();
+}
+
+}  // namespace sparsedyn

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <functional>
+
+#include "sparsedyn/statistics.hpp"
+#include "sparsedyn/world.hpp"
+
+namespace sparsedyn {
+
+/// What the World tells the outside about its run: the collision and segment callbacks, the
+/// statistics, and the deepest overlap seen at any processed event.
+class Observers {
+ public:
+  Statistics& stats() { return stats_; }
+  const Statistics& stats() const { return stats_; }
+
+  void OnCollision(std::function<void(const CollisionEvent&)> callback) {
+    on_collision_ = std::move(callback);
+  }
+  void OnSegment(std::function<void(const MotionSegment&)> callback) {
+    on_segment_ = std::move(callback);
+  }
+  /// Whether anyone listens (so that an event builds its report only then).
+  bool WantsCollisions() const { return static_cast<bool>(on_collision_); }
+  bool WantsSegments() const { return static_cast<bool>(on_segment_); }
+  void Collision(const CollisionEvent& event) const { on_collision_(event); }
+  void Segment(const MotionSegment& segment) const { on_segment_(segment); }
+
+  /// Notes the gap (negative: an overlap) of a contact being processed.
+  void NotePenetration(double gap) {
+    if (-gap > max_penetration_) max_penetration_ = -gap;
+  }
+  double MaxPenetration() const { return max_penetration_; }
+
+ private:
+  Statistics stats_;
+  std::function<void(const CollisionEvent&)> on_collision_;
+  std::function<void(const MotionSegment&)> on_segment_;
+  double max_penetration_ = 0.0;
+};
+
+}  // namespace sparsedyn

@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: MIT
+#include "world/polyhedron_contacts.hpp"
+
+#include <cmath>
+
+#include "dynamics/rigid_collision.hpp"
+#include "math/event_time.hpp"
+#include "narrow/time_of_contact.hpp"
+#include "sparse/meeting.hpp"
+#include "world/contact_band.hpp"
+#include "world/phase_timer.hpp"
+
+namespace sparsedyn {
+
+Vec3 PolyhedronContacts::PairShift(std::uint32_t a, std::uint32_t b) const {
+  const ElementPaths& paths = core_.bodies.paths;
+  const Vec3 d = paths.PathOf(b).PositionAt(paths.Now()) - paths.PathOf(a).PositionAt(paths.Now());
+  return core_.MinimumImage(d) - d;
+}
+
+double PolyhedronContacts::PairTolerance(std::uint32_t a, std::uint32_t b) const {
+  const BodyMaterials& materials = core_.bodies.materials;
+  return core_.settings.contact_tolerance * (materials.Radius(a) + materials.Radius(b));
+}
+
+ClosestFeatures PolyhedronContacts::PairFeatures(std::uint32_t a, std::uint32_t b,
+                                                 const Vec3& shift,
+                                                 std::optional<FeaturePair> warm) const {
+  const BodyStore& bodies = core_.bodies;
+  const double now = bodies.paths.Now();
+  Pose pose_b = bodies.RigidPathOf(b).PoseAt(now);
+  pose_b.translation += shift;
+  return FindClosestFeatures(*bodies.rigid.ShapeOf(a).tracked, bodies.RigidPathOf(a).PoseAt(now),
+                             *bodies.rigid.ShapeOf(b).tracked, pose_b, warm);
+}
+
+void PolyhedronContacts::PredictEngagement(std::uint32_t k) {
+  Statistics& stats = core_.observers.stats();
+  const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_detailed);
+  const BodyStore& bodies = core_.bodies;
+  const double now = bodies.paths.Now();
+  Engagements::Engagement& e = detailed_.engagements()[k];
+  const Vec3 shift = PairShift(e.a, e.b);
+  RigidPath path_a = bodies.RigidPathOf(e.a);
+  RigidPath path_b = bodies.RigidPathOf(e.b);
+  path_b.centre.p0 += shift;
+  // The engagement lasts while the element spheres overlap.
+  const double separation = EventTime(
+      now, PredictSeparation(bodies.MoverOf(e.a, now), bodies.MoverOf(e.b, now), shift));
+  const double tolerance = PairTolerance(e.a, e.b);
+  const std::optional<FeaturePair> warm =
+      e.has_features ? std::optional<FeaturePair>(e.features) : std::nullopt;
+  const ClosestFeatures current = PairFeatures(e.a, e.b, shift, warm);
+  if (current.status == ClosestFeatures::Status::kIterationCap) ++stats.walk_cap_hits;
+  e.features = current.features;
+  e.has_features = true;
+  e.contact_next = false;
+  e.checkpoint = false;
+  double time = separation;
+  if (current.distance <= tolerance) {
+    // Touching now: the contact handler decides whether any point approaches.
+    e.contact_next = true;
+    time = now;
+  } else {
+    ++stats.detail_predictions;
+    ContactPredictionOptions options;
+    options.tolerance = tolerance;
+    options.max_iterations = kIterationsPerPrediction;
+    options.spin_radius_a = bodies.rigid.SpinRadius(e.a);
+    options.spin_radius_b = bodies.rigid.SpinRadius(e.b);
+    const ContactPrediction p =
+        PredictContact(*bodies.rigid.ShapeOf(e.a).tracked, path_a,
+                       *bodies.rigid.ShapeOf(e.b).tracked, path_b, now, separation, e.features,
+                       options);
+    stats.detail_iterations += static_cast<std::uint64_t>(p.iterations);
+    if (p.kind != ContactPrediction::Kind::kNone && p.time <= separation) {
+      e.contact_next = p.kind == ContactPrediction::Kind::kContact;
+      e.checkpoint = !e.contact_next;
+      if (e.checkpoint) ++stats.detail_checkpoints;
+      e.features = p.features.features;
+      time = std::max(now, p.time);
+    }
+  }
+  detailed_.Schedule(k, time);
+}
+
+void PolyhedronContacts::HandleEngagement(std::uint32_t k) {
+  Engagements::Engagement& e = detailed_.engagements()[k];
+  if (e.checkpoint) {
+    PredictEngagement(k);
+    return;
+  }
+  if (!e.contact_next) {
+    detailed_.End(k);
+    return;
+  }
+  Statistics& stats = core_.observers.stats();
+  const Vec3 shift = PairShift(e.a, e.b);
+  ClosestFeatures features;
+  {
+    const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_detailed);
+    features = PairFeatures(e.a, e.b, shift, e.features);
+  }
+  e.features = features.features;
+  const double tolerance = PairTolerance(e.a, e.b);
+  if (features.distance > tolerance) {
+    ++stats.early_events;
+    PredictEngagement(k);
+    return;
+  }
+  if (Collide(e.a, e.b, features, shift)) return;
+  // Touching, but no point approaches (they have just bounced, or slide past each other):
+  // look again once the tolerance band could have been closed.
+  const BodyStore& bodies = core_.bodies;
+  const double now = bodies.paths.Now();
+  const RigidPath a = bodies.RigidPathOf(e.a);
+  const RigidPath b = bodies.RigidPathOf(e.b);
+  const double speed = (b.centre.VelocityAt(now) - a.centre.VelocityAt(now)).norm() +
+                       a.omega.norm() * bodies.materials.Radius(e.a) +
+                       b.omega.norm() * bodies.materials.Radius(e.b);
+  const double acceleration = (b.centre.a - a.centre.a).norm();
+  const double separation = EventTime(
+      now, PredictSeparation(bodies.MoverOf(e.a, now), bodies.MoverOf(e.b, now), shift));
+  const double again = BandExit(now, tolerance, speed, acceleration);
+  e.contact_next = false;
+  e.checkpoint = again < separation;
+  detailed_.Schedule(k, std::min(again, separation));
+}
+
+bool PolyhedronContacts::Collide(std::uint32_t a, std::uint32_t b,
+                                 const ClosestFeatures& features, const Vec3& shift) {
+  const BodyStore& bodies = core_.bodies;
+  Statistics& stats = core_.observers.stats();
+  const double now = bodies.paths.Now();
+  RigidImpulseResult result;
+  ContactGeometry contact;
+  {
+    const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
+    const RigidPath path_a = bodies.RigidPathOf(a);
+    RigidPath path_b = bodies.RigidPathOf(b);
+    path_b.centre.p0 += shift;
+    const Pose pose_a = path_a.PoseAt(now);
+    const Pose pose_b = path_b.PoseAt(now);
+    contact = ContactFromFeatures(*bodies.rigid.ShapeOf(a).polyhedron, pose_a,
+                                  *bodies.rigid.ShapeOf(b).polyhedron, pose_b, features,
+                                  PairTolerance(a, b));
+    RigidBodyState body_a{pose_a.translation, path_a.centre.VelocityAt(now),
+                          bodies.rigid.Omega(a), bodies.materials.InvMass(a),
+                          bodies.InvInertiaWorld(a, pose_a.rotation)};
+    RigidBodyState body_b{pose_b.translation, path_b.centre.VelocityAt(now),
+                          bodies.rigid.Omega(b), bodies.materials.InvMass(b),
+                          bodies.InvInertiaWorld(b, pose_b.rotation)};
+    RigidImpulseOptions options;
+    options.restitution = bodies.materials.Restitution(a) * bodies.materials.Restitution(b);
+    options.friction = std::sqrt(bodies.materials.Friction(a) * bodies.materials.Friction(b));
+    options.elastic_below_speed = core_.settings.elastic_below_speed;
+    result = ApplyRigidImpulse(body_a, body_b, contact, options);
+    if (result.rounds == 0) return false;
+    changes_.SetMotion(a, body_a.velocity, body_a.angular_velocity);
+    changes_.SetMotion(b, body_b.velocity, body_b.angular_velocity);
+  }
+  core_.observers.NotePenetration(contact.distance);
+  ++stats.collisions;
+  if (result.guarded) ++stats.collapse_guarded;
+  if (core_.observers.WantsCollisions()) {
+    core_.observers.Collision(CollisionEvent{now, bodies.ids.IdOf(a), bodies.ids.IdOf(b), -1,
+                                             result.point, contact.normal,
+                                             result.normal_impulse});
+  }
+  // Both bodies' element predictions are superseded (actor-absent, §4.2), replaced in place.
+  for (const std::uint32_t body : {a, b}) {
+    if (sparse_.PredictionOf(body).kind != EventKind::kNone) ++stats.stale_actor_absent;
+  }
+  sparse_.PredictFull(a);
+  sparse_.PredictFull(b);
+  detailed_.PredictEngagementsOf(a);
+  detailed_.PredictEngagementsOf(b, /*done_partner=*/a);
+  return true;
+}
+
+}  // namespace sparsedyn

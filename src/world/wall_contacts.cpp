@@ -1,0 +1,241 @@
+// SPDX-License-Identifier: MIT
+#include "world/wall_contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include "dynamics/rigid_collision.hpp"
+#include "dynamics/sphere_collision.hpp"
+#include "math/event_time.hpp"
+#include "narrow/time_of_contact.hpp"
+#include "sparse/meeting.hpp"
+#include "world/contact_band.hpp"
+#include "world/phase_timer.hpp"
+
+namespace sparsedyn {
+
+void WallContacts::Handle(std::uint32_t i) {
+  if (core_.bodies.rigid.Any()) {
+    HandlePolyhedron(i);
+  } else {
+    HandleSphere(i);
+  }
+}
+
+bool WallContacts::HoldAgainstWall(std::uint32_t i, int w, const Vec3& normal, const Vec3& v,
+                                   double gap) {
+  // Coming to rest: touching, moving to or from the wall slower than the collapse guard, and
+  // pressed into it by gravity or thrust. Bounces would follow ever faster (the guard keeps
+  // them elastic; below the time's resolution they would stall the clock), so the wall holds
+  // the body instead: its velocity and acceleration into the wall become zero (the normal
+  // force) until a collision with another body moves it.
+  const ElementPaths& paths = core_.bodies.paths;
+  const double radius = core_.bodies.materials.Radius(i);
+  if (gap > core_.settings.contact_tolerance * radius) return false;
+  const double approach = normal.dot(v);
+  if (!(std::abs(approach) < core_.settings.elastic_below_speed) ||
+      !(normal.dot(paths.accelerations().Free(i)) < 0.0)) {
+    return false;
+  }
+  const std::uint8_t walls = paths.accelerations().HeldBy(i);
+  changes_.SetHeld(i, static_cast<std::uint8_t>(walls | 1u << w), v);
+  // A wall collision like any other (its segment comes with one), with the impulse that stops
+  // the body's approach.
+  Statistics& stats = core_.observers.stats();
+  core_.observers.NotePenetration(gap);
+  ++stats.wall_holds;
+  ++stats.wall_collisions;
+  if (core_.observers.WantsCollisions()) {
+    core_.observers.Collision(CollisionEvent{
+        paths.Now(), core_.bodies.ids.IdOf(i), BodyId{}, w, paths.PositionNow(i) - radius * normal,
+        -normal, std::max(-approach, 0.0) / core_.bodies.materials.InvMass(i)});
+  }
+  sparse_.PredictFull(i);
+  detailed_.PredictEngagementsOf(i);
+  return true;
+}
+
+void WallContacts::HandleSphere(std::uint32_t i) {
+  const ElementPaths& paths = core_.bodies.paths;
+  const BodyMaterials& materials = core_.bodies.materials;
+  Statistics& stats = core_.observers.stats();
+  const int w = sparse_.PredictionOf(i).aux;
+  const WallPlane plane = BoxWall(core_.settings.container, w);
+  const double now = paths.Now();
+  const Vec3 p = paths.PathOf(i).PositionAt(now);
+  const Vec3 v = paths.PathOf(i).VelocityAt(now);
+  const double radius = materials.Radius(i);
+  const double gap = plane.normal.dot(p) - plane.offset - radius;
+  const double approach = plane.normal.dot(v);
+  if (HoldAgainstWall(i, w, plane.normal, v, gap)) return;
+  if (gap > core_.settings.contact_tolerance * radius || approach >= 0) {
+    if (gap > core_.settings.contact_tolerance * radius) ++stats.early_events;
+    sparse_.PredictFull(i);
+    return;
+  }
+  core_.observers.NotePenetration(gap);
+  ImpulseResult result;
+  {
+    // A static wall has infinite mass: the body's normal velocity is reversed and scaled by e.
+    const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
+    result = SphereImpulse(v, Vec3::Zero(), materials.InvMass(i), 0.0, -plane.normal,
+                           materials.Restitution(i), core_.settings.elastic_below_speed);
+    changes_.SetVelocity(i, result.v_a);
+  }
+  ++stats.wall_collisions;
+  if (result.guarded) ++stats.collapse_guarded;
+  if (core_.observers.WantsCollisions()) {
+    core_.observers.Collision(CollisionEvent{now, core_.bodies.ids.IdOf(i), BodyId{}, w,
+                                             p - radius * plane.normal, -plane.normal,
+                                             result.impulse});
+  }
+  sparse_.PredictFull(i);
+  detailed_.PredictEngagementsOf(i);
+}
+
+Event WallContacts::PredictPolyhedron(std::uint32_t i, Event event) {
+  const BodyStore& bodies = core_.bodies;
+  Statistics& stats = core_.observers.stats();
+  const double now = bodies.paths.Now();
+  const RigidPath path = bodies.RigidPathOf(i);
+  const ConvexPolyhedron& polyhedron = *bodies.rigid.ShapeOf(i).polyhedron;
+  const double radius = bodies.materials.Radius(i);
+  const double tolerance = core_.settings.contact_tolerance * radius;
+  const Pose pose = path.PoseAt(now);
+  const Vec3 centre = pose.translation;
+  const Vec3 velocity = path.centre.VelocityAt(now);
+  for (int w = 0; w < 6; ++w) {
+    const WallPlane plane = BoxWall(core_.settings.container, w);
+    // The polyhedron cannot reach a wall before its bounding sphere does.
+    double begin = now;
+    const double clearance = plane.normal.dot(centre) - plane.offset - radius;
+    if (clearance > 0) {
+      // Most walls are out of reach before the body's next event: the sphere's gap to the wall
+      // is clearance + (n . v) dt + (n . a) dt^2 / 2, so only its closing parts can consume the
+      // clearance (with a margin for round-off).
+      const double closing_speed = std::min(plane.normal.dot(velocity), 0.0);
+      const double closing_accel = std::min(plane.normal.dot(path.centre.a), 0.0);
+      if (closing_speed == 0.0 && closing_accel == 0.0) continue;
+      const double h = event.time - now;
+      if (h < kInfinity &&
+          -(closing_speed + 0.5 * closing_accel * h) * h * (1.0 + 1e-9) < clearance) {
+        continue;
+      }
+      const double dt = PredictWallMeeting(bodies.BodyMoverOf(i, now), plane.normal, plane.offset);
+      if (dt == kInfinity) continue;
+      begin = EventTime(now, dt);
+    }
+    if (begin >= event.time) continue;
+    if (begin == now) {
+      // Touching the wall now: a contact if some vertex in the band approaches, else (it has
+      // just bounced) the wall waits until the band could have been closed.
+      const Vec3 n_B = pose.rotation.conjugate() * plane.normal;
+      const int nearest = bodies.rigid.ShapeOf(i).tracked->SupportVertex(-n_B);
+      const double gap = plane.normal.dot(pose.ToWorld(polyhedron.vertex(nearest))) - plane.offset;
+      if (gap <= tolerance) {
+        bool approaching = false;
+        const bool skip = band_skip_ && *band_skip_ == std::make_pair(i, w);
+        for (int v = 0; v < polyhedron.vertex_count() && !skip && !approaching; ++v) {
+          const Vec3 x = pose.ToWorld(polyhedron.vertex(v));
+          approaching = plane.normal.dot(x) - plane.offset <= gap + tolerance &&
+                        plane.normal.dot(path.PointVelocity(x, now)) < 0;
+        }
+        if (approaching) {
+          event = Event{now, EventKind::kWallMeet, static_cast<std::uint8_t>(w), kNoIndex, 0};
+          continue;
+        }
+        begin = BandExit(now, tolerance,
+                         path.centre.VelocityAt(now).norm() + path.omega.norm() * radius,
+                         path.centre.a.norm());
+        if (begin >= event.time) continue;
+      }
+    }
+    ++stats.detail_predictions;
+    const WallContactPrediction p = PredictWallContact(
+        *bodies.rigid.ShapeOf(i).tracked, path, plane.normal, plane.offset, begin, event.time,
+        tolerance, kIterationsPerPrediction, bodies.rigid.SpinRadius(i));
+    stats.detail_iterations += static_cast<std::uint64_t>(p.iterations);
+    if (p.kind != ContactPrediction::Kind::kNone && p.time < event.time) {
+      if (p.kind == ContactPrediction::Kind::kCheckpoint) ++stats.detail_checkpoints;
+      event = Event{std::max(now, p.time), EventKind::kWallMeet, static_cast<std::uint8_t>(w),
+                    kNoIndex, 0};
+    }
+  }
+  return event;
+}
+
+void WallContacts::HandlePolyhedron(std::uint32_t i) {
+  const BodyStore& bodies = core_.bodies;
+  Statistics& stats = core_.observers.stats();
+  const double now = bodies.paths.Now();
+  const int w = sparse_.PredictionOf(i).aux;
+  const WallPlane plane = BoxWall(core_.settings.container, w);
+  const RigidPath path = bodies.RigidPathOf(i);
+  const Pose pose = path.PoseAt(now);
+  const ConvexPolyhedron& polyhedron = *bodies.rigid.ShapeOf(i).polyhedron;
+  const double tolerance = core_.settings.contact_tolerance * bodies.materials.Radius(i);
+  std::vector<double> gaps(static_cast<std::size_t>(polyhedron.vertex_count()));
+  double nearest = kInfinity;
+  for (int v = 0; v < polyhedron.vertex_count(); ++v) {
+    gaps[v] = plane.normal.dot(pose.ToWorld(polyhedron.vertex(v))) - plane.offset;
+    nearest = std::min(nearest, gaps[v]);
+  }
+  if (nearest > tolerance) {
+    // A checkpoint of the wall prediction, or predicted early (conservative): look again.
+    ++stats.early_events;
+    sparse_.PredictFull(i);
+    return;
+  }
+  // The contact: every vertex within the band (a vertex, an edge or a face on the wall), in
+  // order around their mean so that a face's vertices form its polygon.
+  ContactGeometry contact;
+  contact.normal = -plane.normal;  // from the body towards the wall
+  contact.distance = nearest;
+  for (int v = 0; v < polyhedron.vertex_count(); ++v) {
+    if (gaps[v] <= nearest + tolerance) contact.points.push_back(pose.ToWorld(polyhedron.vertex(v)));
+  }
+  if (contact.points.size() > 2) {
+    const Vec3 mean = std::accumulate(contact.points.begin(), contact.points.end(),
+                                      Vec3(Vec3::Zero())) / static_cast<double>(contact.points.size());
+    const Vec3 u = plane.normal.unitOrthogonal();
+    const Vec3 v = plane.normal.cross(u);
+    std::sort(contact.points.begin(), contact.points.end(), [&](const Vec3& p, const Vec3& q) {
+      return std::atan2((p - mean).dot(v), (p - mean).dot(u)) <
+             std::atan2((q - mean).dot(v), (q - mean).dot(u));
+    });
+  }
+  RigidImpulseResult result;
+  {
+    const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
+    RigidBodyState body{pose.translation, path.centre.VelocityAt(now), bodies.rigid.Omega(i),
+                        bodies.materials.InvMass(i), bodies.InvInertiaWorld(i, pose.rotation)};
+    RigidBodyState wall;  // static: no mass to move
+    wall.centre = contact.points.front();
+    RigidImpulseOptions options;
+    options.restitution = bodies.materials.Restitution(i);
+    options.friction = bodies.materials.Friction(i);
+    options.elastic_below_speed = core_.settings.elastic_below_speed;
+    result = ApplyRigidImpulse(body, wall, contact, options);
+    if (result.rounds > 0) changes_.SetMotion(i, body.velocity, body.angular_velocity);
+  }
+  if (result.rounds == 0) {
+    // Touching without approaching: predict again with this wall held off for the band time.
+    band_skip_ = std::make_pair(i, w);
+    sparse_.PredictFull(i);
+    band_skip_.reset();
+    return;
+  }
+  core_.observers.NotePenetration(nearest);
+  ++stats.wall_collisions;
+  if (result.guarded) ++stats.collapse_guarded;
+  if (core_.observers.WantsCollisions()) {
+    core_.observers.Collision(CollisionEvent{now, bodies.ids.IdOf(i), BodyId{}, w, result.point,
+                                             contact.normal, result.normal_impulse});
+  }
+  sparse_.PredictFull(i);
+  detailed_.PredictEngagementsOf(i);
+}
+
+}  // namespace sparsedyn
