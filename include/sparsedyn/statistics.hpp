@@ -7,10 +7,10 @@
 namespace sparsedyn {
 
 /// Counters of a World's event loop (world.Stats()). Event kinds are indexed in the order of
-/// EventKindName(): cell_crossing, wall_meet, sphere_meet, engagement.
+/// EventKindName(): cell_crossing, wall_meet, sphere_meet, engagement, static_meet, body_timer.
 struct Statistics {
   std::uint64_t events = 0;                        // events taken from the queue
-  std::array<std::uint64_t, 4> events_by_kind{};   // the same, by kind
+  std::array<std::uint64_t, 6> events_by_kind{};   // the same, by kind
   std::uint64_t stale_target_absent = 0;  // meetings whose target changed path (§4.2): re-predict
   std::uint64_t stale_actor_absent = 0;   // predictions superseded because the actor changed
   std::uint64_t meetings = 0;             // live element meetings (sparse phase)

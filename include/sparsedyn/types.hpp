@@ -32,4 +32,11 @@ struct Envelope {
   bool IsZero() const { return e0 == 0.0 && e1 == 0.0 && e2 == 0.0; }
 };
 
+/// A change of a body's own acceleration (App. F.3, a rocket's thrust): from `time` (s) on it is
+/// `thrust` (m/s^2, added to gravity).
+struct ThrustChange {
+  double time = 0.0;
+  Vec3 thrust = Vec3::Zero();
+};
+
 }  // namespace sparsedyn

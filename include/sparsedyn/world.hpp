@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -70,6 +71,9 @@ struct WorldSettings {
   /// more than a relative 1e-12 (inelastic collapse or a stuck configuration): no hang.
   std::uint64_t stall_event_limit = 1u << 22;
   bool profile_phases = false;  // measure Statistics::seconds_* (costs two clock reads an event)
+  /// The clock's value when the World is made, s: a World built from the state of another at
+  /// time t (a final scene written by `sparsedyn run --write-final-scene`) runs on from t.
+  double start_time = 0.0;
 };
 
 /// A body: a sphere of `radius`, or the convex polyhedron `shape`.
@@ -83,6 +87,9 @@ struct BodyDef {
   Vec3 velocity = Vec3::Zero();        // m/s
   Vec3 angular_velocity = Vec3::Zero();  // rad/s, world frame (polyhedra)
   Vec3 thrust = Vec3::Zero();          // acceleration of its own (App. F.3), added to gravity
+  /// Later changes of `thrust`, times strictly increasing and not before the World's clock:
+  /// each is an event of the body's.
+  std::vector<ThrustChange> thrust_schedule;
   double mass = 1.0;                   // kg
   double restitution = 1.0;            // 1 = elastic; the collision uses the product of the two
   double friction = 0.0;               // Coulomb coefficient; a pair uses sqrt(mu_a mu_b)
@@ -144,10 +151,33 @@ class World {
 
   /// Adds a body at the current time. Refused, with nothing changed, when a value is NaN/Inf,
   /// radius or mass <= 0, restitution outside [0, 1], friction < 0, the orientation is not a
-  /// unit quaternion, an envelope coefficient < 0, the body lies outside the container, it
-  /// overlaps (polyhedra: touches) a body already present, it would mix spheres and polyhedra
-  /// in one World, or it is a polyhedron added after the first AdvanceTo.
+  /// unit quaternion, an envelope coefficient < 0, a thrust change is not later than the one
+  /// before or comes before the clock, the body lies outside the container, it overlaps
+  /// (polyhedra: touches) a body already present, or it would mix spheres and polyhedra in
+  /// one World.
   Result<BodyId> AddBody(const BodyDef& def);
+
+  // --- Changes between AdvanceTo calls, at Time(). Each is checked first: a refused change
+  // (an invalid or removed BodyId, a value NaN/Inf, a pose outside the container or touching
+  // another body) changes nothing and names what was wrong. ---
+
+  /// Removes the body; its handle is refused from then on (a later body may take its slot,
+  /// under a new generation).
+  Status RemoveBody(BodyId id);
+  /// Sets the body's velocity (m/s), its angular velocity kept.
+  Status SetVelocity(BodyId id, const Vec3& velocity);
+  /// Sets the body's angular velocity (rad/s, world frame), its velocity kept.
+  Status SetAngularVelocity(BodyId id, const Vec3& angular_velocity);
+  /// Applies an impulse (N s, world frame) at a point (world frame): the velocity changes by
+  /// impulse / m and the angular velocity by I^-1 ((point - centre) x impulse).
+  Status ApplyImpulse(BodyId id, const Vec3& impulse, const Vec3& point);
+  /// Moves the body to `position` with `orientation` at once (a teleport, App. H.3): its former
+  /// partners predict again and the new place is searched. Refused where it would touch
+  /// another body or leave the container.
+  Status SetPose(BodyId id, const Vec3& position, const Eigen::Quaterniond& orientation);
+  /// Sets the body's own acceleration (m/s^2, added to gravity) from now on, and its schedule
+  /// of later changes (replacing what was left of the old one).
+  Status SetThrust(BodyId id, const Vec3& thrust, const std::vector<ThrustChange>& schedule = {});
 
   /// Processes every event with time <= t, then sets the clock to t. Fails (clock at the last
   /// processed event) when the event loop stalls, see WorldSettings::stall_event_limit.
@@ -157,9 +187,18 @@ class World {
   BodyState StateAt(BodyId id, double t) const;
 
   double Time() const;
+  /// The number of bodies the World holds.
   std::size_t BodyCount() const;
+  /// Whether `id` names a body the World holds (not removed).
   bool IsValid(BodyId id) const;
+  /// The handle of the body in slot `index` (slots are numbered in the order bodies were
+  /// added, and a removed body's slot is taken by a later one); invalid for an empty slot.
+  /// Without removals, IdOf(0) ... IdOf(BodyCount() - 1) are all the bodies.
   BodyId IdOf(std::uint32_t index) const;
+  /// The number of slots (BodyCount() plus the empty ones).
+  std::size_t SlotCount() const;
+  /// Every body's handle, in slot order.
+  std::vector<BodyId> Bodies() const;
 
   /// Called after every resolved collision (body-body and body-wall), in event order.
   void OnCollision(std::function<void(const CollisionEvent&)> callback);

@@ -142,6 +142,14 @@ class BasicCalendarQueue {
     prefetch_ = entries_.size() * sizeof(Entry) >= kPrefetchBytes;
   }
 
+  /// Keeps only slots 0 .. slots - 1, with their payloads; the queue must be empty (Clear).
+  void Truncate(std::size_t slots) {
+    SPARSEDYN_ASSERT(size_ == 0 && slots <= entries_.size(),
+                     "CalendarQueue::Truncate: an empty queue, to fewer slots");
+    entries_.resize(slots);
+    prefetch_ = entries_.size() * sizeof(Entry) >= kPrefetchBytes;
+  }
+
   /// Frees the slot array's room beyond Slots() (a slot array grown one slot at a time holds
   /// up to twice what it needs).
   void ShrinkToFit() { entries_.shrink_to_fit(); }

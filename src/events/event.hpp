@@ -16,13 +16,15 @@ enum class EventKind : std::uint8_t {
   kWallMeet = 1,       // an element's sphere reaches a container wall
   kSphereMeet = 2,     // two elements' spheres meet (sparse phase, §3.3)
   kEngagement = 3,     // an engaged pair's detail event: contact or separation (§5.2)
-  kNone = 4,           // no event (an element with nothing ahead)
+  kStaticMeet = 4,     // an element's sphere reaches a static body's box
+  kBodyTimer = 5,      // a change of a body's motion at a given time (a thrust schedule)
+  kNone = 6,           // no event (an element with nothing ahead)
 };
-inline constexpr int kEventKindCount = 4;
+inline constexpr int kEventKindCount = 6;
 
 /// Names used in statistics and in `sparsedyn run --json` ("events_by_kind").
 inline constexpr std::array<std::string_view, kEventKindCount> kEventKindNames = {
-    "cell_crossing", "wall_meet", "sphere_meet", "engagement"};
+    "cell_crossing", "wall_meet", "sphere_meet", "engagement", "static_meet", "body_timer"};
 
 /// An element's one outstanding prediction (§4): the earliest thing that can happen to it.
 /// `target` and `target_version` identify the other element of a meeting so that a meeting

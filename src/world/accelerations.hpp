@@ -65,6 +65,20 @@ class Accelerations {
     return a;
   }
 
+  /// Body i's free acceleration from now on is `a` (a new thrust): any wall's hold ends.
+  void SetFree(std::uint32_t i, const Vec3& a, std::size_t count) {
+    if (!own_) {
+      if (a == uniform_) return;
+      own_ = true;
+      per_body_.assign(count, uniform_);
+    }
+    per_body_[i] = a;
+    if (!held_by_.empty()) {
+      free_[i] = a;
+      held_by_[i] = 0;
+    }
+  }
+
   /// The largest free acceleration of any body (m/s^2).
   double MaxFreeNorm(std::size_t count) const {
     if (!own_) return uniform_.norm();

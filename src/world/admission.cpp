@@ -8,21 +8,42 @@
 
 namespace sparsedyn {
 
-Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t index,
+std::optional<Error> CheckSchedule(const std::vector<ThrustChange>& schedule, double now,
+                                   const std::string& body) {
+  for (std::size_t k = 0; k < schedule.size(); ++k) {
+    const std::string at = body + "thrust_schedule[" + std::to_string(k) + "]: ";
+    const ThrustChange& change = schedule[k];
+    if (!std::isfinite(change.time) || !change.thrust.allFinite()) {
+      return Error{at + "time and thrust must be finite"};
+    }
+    if (change.time < now) {
+      return Error{at + "time " + FormatExact(change.time) + " is before the World's clock (" +
+                   FormatExact(now) + ")"};
+    }
+    if (k > 0 && !(change.time > schedule[k - 1].time)) {
+      return Error{at + "time " + FormatExact(change.time) +
+                   " must be later than the change before it (" +
+                   FormatExact(schedule[k - 1].time) + ")"};
+    }
+  }
+  return std::nullopt;
+}
+
+Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t slot,
                                              bool started) const {
-  if (std::optional<Error> error = CheckBodyValues(def, index)) return *error;
-  const std::string body = "body " + std::to_string(index) + ": ";
+  if (std::optional<Error> error = CheckBodyValues(def, slot)) return *error;
+  const std::string body = "body " + std::to_string(slot) + ": ";
   const bool polyhedron = def.shape != nullptr;
   const BodyStore& bodies = core_.bodies;
-  if (index > 0 && polyhedron != bodies.rigid.Any()) {
+  if (bodies.Size() > 0 && polyhedron != bodies.rigid.AnyPolyhedron()) {
     return Error{body + "a World holds spheres or polyhedra, not both (this body is a " +
                  (polyhedron ? "polyhedron" : "sphere") + ", body 0 is not)"};
   }
   if (polyhedron && !def.envelope.IsZero()) {
     return Error{body + "envelopes are for spheres; a polyhedron's path is exact"};
   }
-  if (polyhedron && started) {
-    return Error{body + "polyhedra are added before the first AdvanceTo"};
+  if (std::optional<Error> error = CheckSchedule(def.thrust_schedule, core_.Now(), body)) {
+    return *error;
   }
   Accepted accepted;
   const BodyShape* shape = nullptr;
@@ -41,33 +62,52 @@ Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t i
   }
   // A polyhedron's element sphere is its bounding sphere about the centroid.
   accepted.radius = polyhedron ? shape->polyhedron->bounding_radius() : def.radius;
-  if (std::optional<Error> error = CheckInside(def, shape, accepted.radius, body)) return *error;
-  if (polyhedron) {
-    double distance = 0;
-    if (std::optional<std::uint32_t> other = FindPolyhedronOverlap(def, *shape, distance)) {
-      return Error{body + "touches or overlaps body " + std::to_string(*other) +
-                   " at the start (distance " + FormatExact(distance) + ")"};
-    }
-  } else if (std::optional<std::uint32_t> other = FindOverlap(def.position, def.radius, started)) {
-    return Error{body + "overlaps body " + std::to_string(*other) + " at the start (t = " +
-                 FormatExact(core_.Now()) + ")"};
-  }
+  const Placement placement{def.position, def.orientation.normalized(), shape, accepted.radius};
+  if (std::optional<Error> error = CheckInside(placement, body)) return *error;
+  if (std::optional<Error> error = CheckApart(placement, kNoIndex, started, body)) return *error;
   return accepted;
 }
 
-std::optional<Error> Admission::CheckInside(const BodyDef& def, const BodyShape* shape,
-                                            double radius, const std::string& body) const {
+Status Admission::CheckPose(std::uint32_t i, std::uint32_t slot, const Vec3& position,
+                            const Eigen::Quaterniond& orientation, bool started) const {
+  const std::string body = "body " + std::to_string(slot) + ": ";
+  if (!position.allFinite()) return Error{body + "position must be finite"};
+  const Eigen::Vector4d q = orientation.coeffs();
+  if (!q.allFinite() || std::abs(q.norm() - 1.0) > 1e-6) {
+    return Error{body + "orientation must be a finite unit quaternion, got norm " +
+                 FormatExact(q.norm())};
+  }
+  const BodyStore& bodies = core_.bodies;
+  const BodyShape* shape = bodies.IsPolyhedron(i) ? &bodies.rigid.ShapeOf(i) : nullptr;
+  const Placement placement{position, orientation.normalized(), shape, bodies.materials.Radius(i)};
+  if (std::optional<Error> error = CheckInside(placement, body)) return *error;
+  if (std::optional<Error> error = CheckApart(placement, i, started, body)) return *error;
+  return Status::Ok();
+}
+
+void Admission::Rebuild() {
+  overlap_index_.Clear();
+  const BodyStore& bodies = core_.bodies;
+  for (std::uint32_t j = 0; j < bodies.Size(); ++j) {
+    overlap_index_.Add(bodies.paths.Start(j).p0, bodies.materials.Radius(j));
+  }
+}
+
+std::optional<Error> Admission::CheckInside(const Placement& placement,
+                                            const std::string& body) const {
   const Container& box = core_.settings.container;
+  const Vec3& position = placement.position;
+  const double radius = placement.radius;
   const auto sphere_inside = [&] {
-    return ((def.position.array() - radius) >= box.lo.array()).all() &&
-           ((def.position.array() + radius) <= box.hi.array()).all();
+    return ((position.array() - radius) >= box.lo.array()).all() &&
+           ((position.array() + radius) <= box.hi.array()).all();
   };
-  if (shape != nullptr && box.kind == Container::Kind::kWalledBox && !sphere_inside()) {
+  if (placement.shape != nullptr && box.kind == Container::Kind::kWalledBox && !sphere_inside()) {
     // Only a body whose bounding sphere crosses a wall can have a vertex outside.
-    const ConvexPolyhedron& poly = *shape->polyhedron;
-    const Eigen::Matrix3d rotation = def.orientation.normalized().toRotationMatrix();
+    const ConvexPolyhedron& poly = *placement.shape->polyhedron;
+    const Eigen::Matrix3d rotation = placement.orientation.toRotationMatrix();
     for (int v = 0; v < poly.vertex_count(); ++v) {
-      const Vec3 x = rotation * poly.vertex(v) + def.position;
+      const Vec3 x = rotation * poly.vertex(v) + position;
       for (int k = 0; k < 3; ++k) {
         if (x[k] < box.lo[k] || x[k] > box.hi[k]) {
           return Error{body + "vertex " + std::to_string(v) + " lies outside the walled box " +
@@ -76,21 +116,21 @@ std::optional<Error> Admission::CheckInside(const BodyDef& def, const BodyShape*
         }
       }
     }
-  } else if (shape == nullptr && box.kind == Container::Kind::kWalledBox) {
+  } else if (placement.shape == nullptr && box.kind == Container::Kind::kWalledBox) {
     for (int k = 0; k < 3; ++k) {
-      if (def.position[k] - radius < box.lo[k] || def.position[k] + radius > box.hi[k]) {
-        return Error{body + "position[" + std::to_string(k) + "] = " +
-                     FormatExact(def.position[k]) + " puts the sphere (radius " +
-                     FormatExact(radius) + ") outside the walled box [" + FormatExact(box.lo[k]) +
-                     ", " + FormatExact(box.hi[k]) + "]"};
+      if (position[k] - radius < box.lo[k] || position[k] + radius > box.hi[k]) {
+        return Error{body + "position[" + std::to_string(k) + "] = " + FormatExact(position[k]) +
+                     " puts the sphere (radius " + FormatExact(radius) +
+                     ") outside the walled box [" + FormatExact(box.lo[k]) + ", " +
+                     FormatExact(box.hi[k]) + "]"};
       }
     }
   } else if (box.kind == Container::Kind::kPeriodicBox) {
     for (int k = 0; k < 3; ++k) {
-      if (def.position[k] < box.lo[k] || def.position[k] >= box.hi[k]) {
-        return Error{body + "position[" + std::to_string(k) + "] = " +
-                     FormatExact(def.position[k]) + " is outside the periodic box [" +
-                     FormatExact(box.lo[k]) + ", " + FormatExact(box.hi[k]) + ")"};
+      if (position[k] < box.lo[k] || position[k] >= box.hi[k]) {
+        return Error{body + "position[" + std::to_string(k) + "] = " + FormatExact(position[k]) +
+                     " is outside the periodic box [" + FormatExact(box.lo[k]) + ", " +
+                     FormatExact(box.hi[k]) + ")"};
       }
       if (2 * radius >= 0.5 * (box.hi[k] - box.lo[k])) {
         return Error{body + "radius " + FormatExact(radius) +
@@ -101,54 +141,66 @@ std::optional<Error> Admission::CheckInside(const BodyDef& def, const BodyShape*
   return std::nullopt;
 }
 
-std::optional<std::uint32_t> Admission::FindOverlap(const Vec3& p, double radius,
-                                                    bool started) const {
-  auto overlaps = [&](const Vec3& q, double r) {
-    const Vec3 d = core_.MinimumImage(q - p);
-    const double reach = radius + r;
-    return d.squaredNorm() < reach * reach * (1 - 1e-12);
-  };
-  std::optional<std::uint32_t> found;
-  if (!started) {
-    // Before the start every body is still at its initial position: use the spatial hash.
-    overlap_index_.ForEachNear(p, radius, [&](std::uint32_t j, const Vec3& q, double r) {
-      if (overlaps(q, r) && (!found || j < *found)) found = j;
-    });
-    return found;
-  }
-  // Bodies added while running (rare) are compared with every body at the current time.
+template <typename Fn>
+void Admission::ForEachNear(const Vec3& p, double reach, std::uint32_t exclude, bool started,
+                            Fn&& fn) const {
   const BodyStore& bodies = core_.bodies;
-  for (std::uint32_t j = 0; j < bodies.Size(); ++j) {
-    if (overlaps(bodies.paths.PathOf(j).PositionAt(core_.Now()), bodies.materials.Radius(j))) {
-      return bodies.ids.PublicOf(j);
-    }
+  const auto orientation = [&](std::uint32_t j, double t) {
+    return bodies.rigid.Tracked() ? bodies.RigidPathOf(j).OrientationAt(t).normalized()
+                                  : Eigen::Quaterniond::Identity();
+  };
+  if (!started) {
+    // Before the start every body is still where it was added: use the spatial hash.
+    overlap_index_.ForEachNear(p, reach, [&](std::uint32_t j, const Vec3& q, double) {
+      if (j != exclude) fn(j, q, bodies.rigid.Tracked() ? bodies.rigid.Orientation0(j)
+                                                         : Eigen::Quaterniond::Identity());
+    });
+    return;
   }
-  return std::nullopt;
+  // While running (rare), every body at the current time.
+  const double now = core_.Now();
+  for (std::uint32_t j = 0; j < bodies.Size(); ++j) {
+    if (j != exclude) fn(j, bodies.paths.PathOf(j).PositionAt(now), orientation(j, now));
+  }
 }
 
-std::optional<std::uint32_t> Admission::FindPolyhedronOverlap(const BodyDef& def,
-                                                              const BodyShape& shape,
-                                                              double& distance) const {
-  // Before the start (polyhedra are only added then) index j is the body's public index and
-  // its path start is where it was added.
+std::optional<Error> Admission::CheckApart(const Placement& placement, std::uint32_t exclude,
+                                           bool started, const std::string& body) const {
   const BodyStore& bodies = core_.bodies;
-  const TrackedPolyhedron& tracked = *shape.tracked;
-  const double radius = shape.polyhedron->bounding_radius();
-  const Pose pose{def.orientation.normalized(), def.position};
-  std::optional<std::uint32_t> found;
-  overlap_index_.ForEachNear(def.position, radius, [&](std::uint32_t j, const Vec3& q, double r) {
-    const Vec3 d = core_.MinimumImage(q - def.position);
-    if (d.squaredNorm() >= (radius + r) * (radius + r)) return;
-    const Pose other{bodies.rigid.Orientation0(j), def.position + d};
+  const Vec3& p = placement.position;
+  std::optional<std::uint32_t> found;  // the lowest public slot touched
+  double distance = 0;
+  ForEachNear(p, placement.radius, exclude, started,
+              [&](std::uint32_t j, const Vec3& q, const Eigen::Quaterniond& q_j) {
+    const Vec3 d = core_.MinimumImage(q - p);
+    const double reach = placement.radius + bodies.materials.Radius(j);
+    const std::uint32_t slot = bodies.ids.PublicOf(j);
+    if (found && slot >= *found) return;
+    if (placement.shape == nullptr) {
+      // Spheres: overlapping beyond round-off.
+      if (d.squaredNorm() < reach * reach * (1 - 1e-12)) {
+        found = slot;
+        distance = d.norm() - reach;
+      }
+      return;
+    }
+    // Polyhedra: touching within the tolerance counts.
+    if (d.squaredNorm() >= reach * reach) return;
     const ClosestFeatures features =
-        FindClosestFeatures(tracked, pose, *bodies.rigid.ShapeOf(j).tracked, other);
-    if (features.distance <= core_.settings.contact_tolerance * (radius + r) &&
-        (!found || j < *found)) {
-      found = j;
+        FindClosestFeatures(*placement.shape->tracked, Pose{placement.orientation, p},
+                            *bodies.rigid.ShapeOf(j).tracked, Pose{q_j, p + d});
+    if (features.distance <= core_.settings.contact_tolerance * reach) {
+      found = slot;
       distance = features.distance;
     }
   });
-  return found;
+  if (!found) return std::nullopt;
+  if (placement.shape == nullptr) {
+    return Error{body + "overlaps body " + std::to_string(*found) + " at the start (t = " +
+                 FormatExact(core_.Now()) + ")"};
+  }
+  return Error{body + "touches or overlaps body " + std::to_string(*found) +
+               " at the start (distance " + FormatExact(distance) + ")"};
 }
 
 }  // namespace sparsedyn

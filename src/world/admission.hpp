@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "broadphase/overlap_index.hpp"
 #include "sparsedyn/result.hpp"
@@ -12,6 +13,11 @@
 #include "world/world_core.hpp"
 
 namespace sparsedyn {
+
+/// Checks a thrust schedule: times finite and strictly increasing, none before `now`, thrusts
+/// finite; the error starts with `body` and names the change.
+std::optional<Error> CheckSchedule(const std::vector<ThrustChange>& schedule, double now,
+                                   const std::string& body);
 
 /// The checks a body passes before the World takes it (AddBody): every value finite and in
 /// range, inside the container, and apart from the bodies already there. Nothing is changed by
@@ -28,19 +34,35 @@ class Admission {
     std::optional<BodyShape> new_shape;
     double radius = 0.0;
   };
-  /// Checks `def` as body `index`, with the World started or not.
-  Result<Accepted> Check(const BodyDef& def, std::uint32_t index, bool started) const;
+  /// Checks `def` as body `index` (public slot `slot`), with the World started or not.
+  Result<Accepted> Check(const BodyDef& def, std::uint32_t slot, bool started) const;
+  /// Checks that element i (public slot `slot`) may be placed at `position` with
+  /// `orientation` now: inside the container, apart from every other body.
+  Status CheckPose(std::uint32_t i, std::uint32_t slot, const Vec3& position,
+                   const Eigen::Quaterniond& orientation, bool started) const;
   /// A body accepted before the start, at `position` with element radius `radius`.
   void NoteAdded(const Vec3& position, double radius) { overlap_index_.Add(position, radius); }
   /// The start: the index is no longer needed.
   void Clear() { overlap_index_.Clear(); }
+  /// Before the start, after a removal: the index again from the bodies there are.
+  void Rebuild();
 
  private:
-  std::optional<Error> CheckInside(const BodyDef& def, const BodyShape* shape, double radius,
-                                   const std::string& body) const;
-  std::optional<std::uint32_t> FindOverlap(const Vec3& p, double radius, bool started) const;
-  std::optional<std::uint32_t> FindPolyhedronOverlap(const BodyDef& def, const BodyShape& shape,
-                                                     double& distance) const;
+  /// A body placed at a pose: its shape (null for a sphere) and element radius.
+  struct Placement {
+    Vec3 position;
+    Eigen::Quaterniond orientation;
+    const BodyShape* shape;
+    double radius;
+  };
+  std::optional<Error> CheckInside(const Placement& placement, const std::string& body) const;
+  std::optional<Error> CheckApart(const Placement& placement, std::uint32_t exclude, bool started,
+                                  const std::string& body) const;
+  /// Calls fn(j, position, orientation) for the elements j != exclude that may be within
+  /// `reach` of p now (before the start: through the overlap index).
+  template <typename Fn>
+  void ForEachNear(const Vec3& p, double reach, std::uint32_t exclude, bool started,
+                   Fn&& fn) const;
 
   WorldCore& core_;
   OverlapIndex overlap_index_;  // bodies added before the start, for the overlap check

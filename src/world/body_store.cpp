@@ -6,6 +6,7 @@
 namespace sparsedyn {
 
 double BodyStore::SpinRadiusOf(std::uint32_t i) const {
+  if (!IsPolyhedron(i)) return 0.0;  // a sphere's turning moves no surface
   return narrow::SpinRadius(*rigid.ShapeOf(i).polyhedron, RigidPathOf(i));
 }
 
@@ -16,12 +17,13 @@ void BodyStore::Permute(const std::vector<std::uint32_t>& old_of_new) {
   materials.Permute(permute);
   rigid.Permute(permute);
   envelopes.Permute(permute);
+  thrusts.Permute(permute);
   ids.Permute(permute);
 }
 
 std::size_t BodyStore::MemoryBytes() const {
   return paths.MemoryBytes() + materials.MemoryBytes() + rigid.MemoryBytes() +
-         envelopes.MemoryBytes() + ids.MemoryBytes();
+         envelopes.MemoryBytes() + thrusts.MemoryBytes() + ids.MemoryBytes();
 }
 
 }  // namespace sparsedyn

@@ -15,6 +15,7 @@
 #include "world/body_materials.hpp"
 #include "world/element_paths.hpp"
 #include "world/rigid_bodies.hpp"
+#include "world/thrust_schedules.hpp"
 
 namespace sparsedyn {
 
@@ -59,19 +60,42 @@ struct BodyStore {
   Mover BodyMoverOf(std::uint32_t i, double t) const {
     return MoverAt(paths.PathOf(i), materials.Radius(i), t);
   }
-  /// Elements' spheres that meet become engaged and the detailed phase watches them.
-  bool EngagesOnMeet() const { return envelopes.Any() || rigid.Any(); }
-  /// Whether every element is a sphere without an envelope on a straight line.
+  /// Whether some pair of elements engages when they meet (Engages): else no engagement
+  /// can exist, and the hot paths skip looking for one.
+  bool EngagesOnMeet() const { return envelopes.Any() || rigid.AnyPolyhedron(); }
+  /// Whether every element is a sphere without an envelope on a straight line, and nothing
+  /// changes a path but collisions.
   bool AllOnStraightLines() const {
     const Accelerations& a = paths.accelerations();
-    return !envelopes.Any() && !rigid.Any() && a.Uniform() && a.UniformValue().isZero(0.0);
+    return !envelopes.Any() && !rigid.AnyPolyhedron() && !thrusts.Any() && a.Uniform() &&
+           a.UniformValue().isZero(0.0);
   }
 
   RigidPath RigidPathOf(std::uint32_t i) const {
     return RigidPath{paths.PathOf(i), rigid.Orientation0(i), rigid.Omega(i)};
   }
+  bool IsPolyhedron(std::uint32_t i) const { return rigid.IsPolyhedron(i); }
+  bool HasEnvelope(std::uint32_t i) const {
+    return envelopes.Any() && !envelopes.Of(i).IsZero();
+  }
+  /// Whether the element spheres of i and j, when they meet, are engaged and watched by the
+  /// detailed phase (a polyhedron, or a sphere whose envelope is wider than the body); else
+  /// the meeting is the contact of two spheres.
+  bool Engages(std::uint32_t i, std::uint32_t j) const {
+    return IsPolyhedron(i) || IsPolyhedron(j) || HasEnvelope(i) || HasEnvelope(j);
+  }
+  /// Body i's inertia per unit mass in its body frame (a solid sphere: 2/5 r^2).
+  Eigen::Matrix3d UnitInertia(std::uint32_t i) const {
+    if (IsPolyhedron(i)) return rigid.ShapeOf(i).unit_inertia;
+    const double r = materials.Radius(i);
+    return Eigen::Matrix3d((0.4 * r * r) * Eigen::Matrix3d::Identity());
+  }
   /// Inverse inertia of body i in the world frame at orientation q.
   Eigen::Matrix3d InvInertiaWorld(std::uint32_t i, const Eigen::Quaterniond& q) const {
+    if (!IsPolyhedron(i)) {
+      const double r = materials.Radius(i);
+      return Eigen::Matrix3d((materials.InvMass(i) / (0.4 * r * r)) * Eigen::Matrix3d::Identity());
+    }
     const Eigen::Matrix3d r = q.toRotationMatrix();
     return materials.InvMass(i) * r * rigid.ShapeOf(i).unit_inv_inertia * r.transpose();
   }
@@ -86,6 +110,7 @@ struct BodyStore {
   BodyMaterials materials;
   RigidBodies rigid;
   Envelopes envelopes;
+  ThrustSchedules thrusts;
   BodyIds ids;
 };
 

@@ -6,9 +6,11 @@
 
 namespace sparsedyn {
 
-PairKind DetailedPhase::KindOf(std::uint32_t /*a*/, std::uint32_t /*b*/) const {
-  // A World holds spheres or polyhedra, not both.
-  return core_.bodies.rigid.Any() ? PairKind::kPolyhedra : PairKind::kSpheres;
+PairKind DetailedPhase::KindOf(std::uint32_t a, std::uint32_t b) const {
+  const bool poly_a = core_.bodies.IsPolyhedron(a), poly_b = core_.bodies.IsPolyhedron(b);
+  if (poly_a && poly_b) return PairKind::kPolyhedra;
+  SPARSEDYN_ASSERT(!poly_a && !poly_b, "a sphere and a polyhedron engaged (not supported yet)");
+  return PairKind::kSpheres;
 }
 
 void DetailedPhase::Engage(std::uint32_t a, std::uint32_t b) {

@@ -4,10 +4,15 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 #include "world/world_impl.hpp"
 
 namespace sparsedyn {
+
+static_assert(std::tuple_size_v<decltype(Statistics::events_by_kind)> == kEventKindCount,
+              "a counter per event kind");
+
 namespace {
 
 // Stall detection: every kStallWindow events the clock must have moved by more than a relative
@@ -26,7 +31,7 @@ Status World::Impl::AdvanceTo(double t) {
     const bool has_element = !queue.Empty();
     const bool has_engagement = !engagement_queue.Empty();
     if (!has_element && !has_engagement) break;
-    // The earlier of the two queue heads; equal times go to the element queue (kinds < 3).
+    // The earlier of the two queue heads; equal times go to the element queue.
     bool engagement = !has_element;
     if (has_element && has_engagement) {
       engagement = engagement_queue.Top().time < queue.Top().time;
@@ -64,7 +69,11 @@ void World::Impl::Dispatch(const QueueTop& top, bool engagement) {
     case EventKind::kCellCrossing:
       sparse_.HandleCrossing(top.slot);
       break;
+    case EventKind::kBodyTimer:
+      HandleThrustChange(top.slot);
+      break;
     case EventKind::kEngagement:
+    case EventKind::kStaticMeet:
     case EventKind::kNone:
       SPARSEDYN_ASSERT(false, "element queue holds an event of the wrong kind");
   }
@@ -81,7 +90,7 @@ void World::Impl::HandleMeeting(std::uint32_t i) {
     return;
   }
   ++stats.meetings;
-  if (core_.bodies.EngagesOnMeet()) {
+  if (core_.bodies.Engages(i, j)) {
     // The element spheres meet; the bodies inside may not: engage (§3.3) and let the detailed
     // phase watch the pair while the actor looks for its next sparse meeting.
     detailed_.Engage(i, j);

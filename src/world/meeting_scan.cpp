@@ -85,8 +85,8 @@ double MeetingScan::PairReference(std::uint32_t i, std::uint32_t j) const {
   // elements: their spheres may have met and separated since, on unchanged paths, and that past
   // meeting must not come back as one now.
   const ElementPaths& paths = core_.bodies.paths;
-  return core_.bodies.EngagesOnMeet() ? paths.Now()
-                                      : std::max(paths.Start(i).t0, paths.Start(j).t0);
+  return core_.bodies.Engages(i, j) ? paths.Now()
+                                    : std::max(paths.Start(i).t0, paths.Start(j).t0);
 }
 
 void MeetingScan::ConsiderImage(const Mover& a, const Mover& b,

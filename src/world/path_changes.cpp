@@ -6,6 +6,7 @@ namespace sparsedyn {
 void PathChanges::SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v) {
   ElementPaths& paths = core_.bodies.paths;
   const Vec3 p = paths.PositionNow(i);  // on the path so far
+  RebaseRotation(i);
   paths.accelerations().SetHeld(i, walls, paths.Size());
   for (int w = 0; w < 6; ++w) {
     if ((walls >> w & 1u) != 0) v[w / 2] = 0.0;  // axis-aligned walls: exact zeros
@@ -21,14 +22,32 @@ void PathChanges::SetMotion(std::uint32_t i, const Vec3& v, const Vec3& omega) {
   bodies.rigid.SetRotation(i, path.OrientationAt(now).normalized(), omega);
   bodies.rigid.SetSpinRadius(i, bodies.SpinRadiusOf(i));
   bodies.paths.SetStart(i, PathStart{path.centre.PositionAt(now), v, now});
-  const std::uint32_t version = ++sparse_.PredictionOf(i).version;
-  if (core_.observers.WantsSegments()) {
-    MotionSegment segment{now,         bodies.ids.IdOf(i), bodies.paths.Start(i).p0, v,
-                          path.centre.a, version};
-    segment.orientation = bodies.rigid.Orientation0(i);
-    segment.angular_velocity = omega;
-    core_.observers.Segment(segment);
-  }
+  ReportSegment(i);
+}
+
+void PathChanges::RebaseRotation(std::uint32_t i) {
+  BodyStore& bodies = core_.bodies;
+  if (!bodies.rigid.Tracked()) return;
+  bodies.rigid.SetOrientation0(i, bodies.RigidPathOf(i).OrientationAt(bodies.paths.Now()).normalized());
+}
+
+void PathChanges::SetAcceleration(std::uint32_t i, const Vec3& free_acceleration) {
+  ElementPaths& paths = core_.bodies.paths;
+  const Vec3 p = paths.PositionNow(i), v = paths.VelocityNow(i);
+  RebaseRotation(i);
+  paths.accelerations().SetFree(i, free_acceleration, paths.Size());
+  paths.SetStart(i, PathStart{p, v, paths.Now()});
+  ReportSegment(i);
+}
+
+void PathChanges::SetPose(std::uint32_t i, const Vec3& position,
+                          const Eigen::Quaterniond& orientation) {
+  BodyStore& bodies = core_.bodies;
+  const Vec3 v = bodies.paths.VelocityNow(i);
+  if (bodies.rigid.Tracked()) bodies.rigid.SetOrientation0(i, orientation);
+  bodies.paths.SetStart(i, PathStart{position, v, bodies.paths.Now()});
+  if (bodies.rigid.Tracked()) bodies.rigid.SetSpinRadius(i, bodies.SpinRadiusOf(i));
+  ReportSegment(i);
 }
 
 }  // namespace sparsedyn

@@ -16,26 +16,43 @@ class PathChanges {
  public:
   PathChanges(WorldCore& core, SparsePhase& sparse) : core_(core), sparse_(sparse) {}
 
-  /// A sphere's new velocity. Inline, as ReportSegment: twice in every collision of a gas.
+  /// A body's new velocity (its spin kept). Inline, as ReportSegment: twice in every collision
+  /// of a gas.
   void SetVelocity(std::uint32_t i, const Vec3& v) {
+    if (core_.bodies.rigid.Tracked()) {
+      SetMotion(i, v, core_.bodies.rigid.Omega(i));
+      return;
+    }
     ElementPaths& paths = core_.bodies.paths;
     paths.SetStart(i, PathStart{paths.PositionNow(i), v, paths.Now()});
     ReportSegment(i);
   }
-  /// A polyhedron's new velocity and angular velocity (world frame).
+  /// A body's new velocity and angular velocity (world frame); rotation is tracked.
   void SetMotion(std::uint32_t i, const Vec3& v, const Vec3& omega);
+  /// A body's new free acceleration (gravity plus a new thrust), its velocity kept; a wall's
+  /// hold ends (the wall takes it up again if the body still rests on it).
+  void SetAcceleration(std::uint32_t i, const Vec3& free_acceleration);
+  /// A body moved at once to `position` with `orientation`, moving at v and omega (a teleport).
+  void SetPose(std::uint32_t i, const Vec3& position, const Eigen::Quaterniond& orientation);
   /// Sphere i held by the walls `walls` (bits; 0 releases it), moving at `v` otherwise: its
   /// velocity and acceleration into the held walls become zero.
   void SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v);
 
  private:
+  // A tracked body's orientation at its new segment's start (now).
+  void RebaseRotation(std::uint32_t i);
   void ReportSegment(std::uint32_t i) {
     const std::uint32_t version = ++sparse_.PredictionOf(i).version;
     if (core_.observers.WantsSegments()) {
       const ElementPaths& paths = core_.bodies.paths;
       const PathStart& s = paths.Start(i);
-      core_.observers.Segment(MotionSegment{paths.Now(), core_.bodies.ids.IdOf(i), s.p0, s.v0,
-                                            paths.PathOf(i).a, version});
+      MotionSegment segment{paths.Now(), core_.bodies.ids.IdOf(i), s.p0, s.v0, paths.PathOf(i).a,
+                            version};
+      if (core_.bodies.rigid.Tracked()) {
+        segment.orientation = core_.bodies.rigid.Orientation0(i);
+        segment.angular_velocity = core_.bodies.rigid.Omega(i);
+      }
+      core_.observers.Segment(segment);
     }
   }
 

@@ -34,12 +34,13 @@ Event SparsePhase::FinishLinearPrediction(std::uint32_t i, const Candidate& best
   Event event;
   event.time = MinOf(crossing_time, best.time);
   const std::uint32_t keep = crossing ? 0u : ~0u;
-  // crossing ? kCellCrossing (0) : meeting ? kSphereMeet (2) : kNone (4), as arithmetic: GCC
+  // crossing ? kCellCrossing (0) : meeting ? kSphereMeet (2) : kNone, as arithmetic: GCC
   // branches on the `?:` form.
   static_assert(static_cast<int>(EventKind::kCellCrossing) == 0 &&
-                static_cast<int>(EventKind::kSphereMeet) == 2 &&
-                static_cast<int>(EventKind::kNone) == 4);
-  event.kind = static_cast<EventKind>((4u - 2u * static_cast<std::uint32_t>(meeting)) & keep);
+                static_cast<int>(EventKind::kSphereMeet) == 2);
+  constexpr auto kNoneKind = static_cast<std::uint32_t>(EventKind::kNone);
+  event.kind = static_cast<EventKind>(
+      (kNoneKind - (kNoneKind - 2u) * static_cast<std::uint32_t>(meeting)) & keep);
   event.aux = static_cast<std::uint8_t>((axis * 2 + (direction > 0 ? 1 : 0)) & ~keep);
   event.target = (best.target & keep) | (kNoIndex & ~keep);
   event.target_version = best.target_version & keep;
@@ -87,7 +88,7 @@ Event SparsePhase::FinishPrediction(std::uint32_t i, const Candidate& best) {
   const double now = core_.Now();
   const double t0 = core_.bodies.paths.Start(i).t0;
   const Mover m0 = core_.bodies.BodyMoverOf(i, t0);
-  const bool polyhedra = core_.bodies.rigid.Any();
+  const bool polyhedra = core_.bodies.IsPolyhedron(i);
   if (!polyhedra) {  // a polyhedron meets the walls after its cell crossing is known
     std::uint8_t wall = 0;
     const double wall_time = std::max(now, EventTime(t0, PredictWall(m0, wall)));
@@ -107,6 +108,9 @@ Event SparsePhase::FinishPrediction(std::uint32_t i, const Candidate& best) {
   // The walls are the detailed phase's business for a polyhedron, and only up to the element's
   // next event (after which it predicts again).
   if (polyhedra && core_.Walled()) event = walls_->PredictPolyhedron(i, event);
+  // A change of its thrust at a given time (its schedule) is the body's own event.
+  const double timer = core_.bodies.thrusts.NextTime(i);
+  if (timer < event.time) event = Event{MaxOf(now, timer), EventKind::kBodyTimer, 0, kNoIndex, 0};
   return event;
 }
 

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "world/sphere_contacts.hpp"
 
+#include <cmath>
+
+#include "dynamics/rigid_collision.hpp"
 #include "dynamics/sphere_collision.hpp"
 #include "math/event_time.hpp"
 #include "sparse/meeting.hpp"
@@ -26,6 +29,10 @@ void SphereContacts::Collide(std::uint32_t i, std::uint32_t j, const Vec3& norma
   const BodyMaterials& materials = core_.bodies.materials;
   Statistics& stats = core_.observers.stats();
   core_.observers.NotePenetration(gap);
+  if (core_.bodies.rigid.Tracked() && materials.Friction(i) * materials.Friction(j) > 0) {
+    CollideWithFriction(i, j, normal, gap);
+    return;
+  }
   ImpulseResult result;
   {
     const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
@@ -54,6 +61,49 @@ void SphereContacts::Collide(std::uint32_t i, std::uint32_t j, const Vec3& norma
   }
   sparse_.PredictCollided(i, j);
   if (!core_.bodies.EngagesOnMeet()) return;  // a gas: no engagements, and no call to find that out
+  detailed_.PredictEngagementsOf(i);
+  detailed_.PredictEngagementsOf(j, /*done_partner=*/i);
+}
+
+void SphereContacts::CollideWithFriction(std::uint32_t i, std::uint32_t j, const Vec3& normal,
+                                         double gap) {
+  // Rubbing spheres: the rigid impulse at the one contact point, with the spins (solid spheres,
+  // I = 2/5 m r^2) and Coulomb friction of sqrt(mu_i mu_j).
+  const BodyStore& bodies = core_.bodies;
+  const ElementPaths& paths = bodies.paths;
+  Statistics& stats = core_.observers.stats();
+  const double ri = bodies.materials.Radius(i);
+  const Vec3 centre_i = paths.PositionNow(i);
+  const Vec3 centre_j = centre_i + (ri + bodies.materials.Radius(j) + gap) * normal;
+  ContactGeometry contact;
+  contact.normal = normal;
+  contact.distance = gap;
+  contact.points = {centre_i + (ri + 0.5 * gap) * normal};
+  const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
+  RigidBodyState a{centre_i, paths.VelocityNow(i), bodies.rigid.Omega(i),
+                   bodies.materials.InvMass(i), bodies.InvInertiaWorld(i, identity)};
+  RigidBodyState b{centre_j, paths.VelocityNow(j), bodies.rigid.Omega(j),
+                   bodies.materials.InvMass(j), bodies.InvInertiaWorld(j, identity)};
+  RigidImpulseOptions options;
+  options.restitution = bodies.materials.Restitution(i) * bodies.materials.Restitution(j);
+  options.friction = std::sqrt(bodies.materials.Friction(i) * bodies.materials.Friction(j));
+  options.elastic_below_speed = core_.settings.elastic_below_speed;
+  core_.observers.NotePenetration(gap);
+  RigidImpulseResult result;
+  {
+    const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
+    result = ApplyRigidImpulse(a, b, contact, options);
+    changes_.SetMotion(i, a.velocity, a.angular_velocity);
+    changes_.SetMotion(j, b.velocity, b.angular_velocity);
+  }
+  ++stats.collisions;
+  if (result.guarded) ++stats.collapse_guarded;
+  if (core_.observers.WantsCollisions()) {
+    core_.observers.Collision(CollisionEvent{paths.Now(), bodies.ids.IdOf(i), bodies.ids.IdOf(j),
+                                             -1, contact.points.front(), normal,
+                                             result.normal_impulse});
+  }
+  sparse_.PredictCollided(i, j);
   detailed_.PredictEngagementsOf(i);
   detailed_.PredictEngagementsOf(j, /*done_partner=*/i);
 }

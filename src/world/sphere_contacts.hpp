@@ -30,6 +30,9 @@ class SphereContacts {
   void HandleEngagement(std::uint32_t k);
 
  private:
+  /// Collide() for spheres that rub (both have friction): with their spins.
+  void CollideWithFriction(std::uint32_t i, std::uint32_t j, const Vec3& normal, double gap);
+
   WorldCore& core_;
   SparsePhase& sparse_;
   DetailedPhase& detailed_;

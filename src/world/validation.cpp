@@ -27,7 +27,7 @@ Status World::Impl::Validate() const {
   const auto n = bodies.Size();
   const double now = core_.Now();
   const double tolerance = core_.settings.contact_tolerance;
-  if (bodies.rigid.Any()) {
+  if (bodies.rigid.AnyPolyhedron()) {
     for (std::uint32_t i = 0; i < n; ++i) {
       for (std::uint32_t j = i + 1; j < n; ++j) {
         const Vec3 shift = polyhedra_.PairShift(i, j);

@@ -17,7 +17,7 @@
 namespace sparsedyn {
 
 void WallContacts::Handle(std::uint32_t i) {
-  if (core_.bodies.rigid.Any()) {
+  if (core_.bodies.IsPolyhedron(i)) {
     HandlePolyhedron(i);
   } else {
     HandleSphere(i);
@@ -76,20 +76,45 @@ void WallContacts::HandleSphere(std::uint32_t i) {
     return;
   }
   core_.observers.NotePenetration(gap);
-  ImpulseResult result;
+  double impulse = 0.0;
+  bool guarded = false;
   {
-    // A static wall has infinite mass: the body's normal velocity is reversed and scaled by e.
     const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
-    result = SphereImpulse(v, Vec3::Zero(), materials.InvMass(i), 0.0, -plane.normal,
-                           materials.Restitution(i), core_.settings.elastic_below_speed);
-    changes_.SetVelocity(i, result.v_a);
+    if (core_.bodies.rigid.Tracked() && materials.Friction(i) > 0) {
+      // A rubbing sphere: the rigid impulse at its contact point, with its spin and its own
+      // friction coefficient (the wall has no material of its own).
+      ContactGeometry contact;
+      contact.normal = -plane.normal;
+      contact.distance = gap;
+      contact.points = {p - radius * plane.normal};
+      RigidBodyState body{p, v, core_.bodies.rigid.Omega(i), materials.InvMass(i),
+                          core_.bodies.InvInertiaWorld(i, Eigen::Quaterniond::Identity())};
+      RigidBodyState wall;  // static: no mass to move
+      wall.centre = contact.points.front();
+      RigidImpulseOptions options;
+      options.restitution = materials.Restitution(i);
+      options.friction = materials.Friction(i);
+      options.elastic_below_speed = core_.settings.elastic_below_speed;
+      const RigidImpulseResult result = ApplyRigidImpulse(body, wall, contact, options);
+      changes_.SetMotion(i, body.velocity, body.angular_velocity);
+      impulse = result.normal_impulse;
+      guarded = result.guarded;
+    } else {
+      // A static wall has infinite mass: the body's normal velocity is reversed and scaled by
+      // e.
+      const ImpulseResult result =
+          SphereImpulse(v, Vec3::Zero(), materials.InvMass(i), 0.0, -plane.normal,
+                        materials.Restitution(i), core_.settings.elastic_below_speed);
+      changes_.SetVelocity(i, result.v_a);
+      impulse = result.impulse;
+      guarded = result.guarded;
+    }
   }
   ++stats.wall_collisions;
-  if (result.guarded) ++stats.collapse_guarded;
+  if (guarded) ++stats.collapse_guarded;
   if (core_.observers.WantsCollisions()) {
     core_.observers.Collision(CollisionEvent{now, core_.bodies.ids.IdOf(i), BodyId{}, w,
-                                             p - radius * plane.normal, -plane.normal,
-                                             result.impulse});
+                                             p - radius * plane.normal, -plane.normal, impulse});
   }
   sparse_.PredictFull(i);
   detailed_.PredictEngagementsOf(i);

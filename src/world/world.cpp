@@ -22,6 +22,7 @@ World::Impl::Impl(const WorldSettings& settings)
       memory_(core_, sparse_, detailed_),
       look_ahead_(core_.bodies.paths, sparse_),
       admission_(core_) {
+  core_.bodies.paths.SetNow(settings.start_time);
   sparse_.SetWalls(&walls_);
   detailed_.SetModels(&spheres_, &polyhedra_);
 }
@@ -35,34 +36,42 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   // Accepted: from here on nothing can fail.
   const double radius = accepted->radius;
   const double now = core_.Now();
+  // Rotation is tracked from the first body whose rotation matters: a polyhedron, or a sphere
+  // that spins or rubs (friction). A gas of frictionless spheres keeps no rotation at all.
+  if (def.shape != nullptr || !def.angular_velocity.isZero(0.0) || def.friction > 0) {
+    bodies.rigid.Track(index);
+  }
   bodies.paths.Append(PathStart{def.position, def.velocity, now},
                       core_.settings.gravity + def.thrust);
   if (!started_) admission_.NoteAdded(def.position, radius);
   bodies.materials.Append(Material{radius, 1.0 / def.mass, def.restitution, def.friction});
-  if (def.shape != nullptr) {
+  if (bodies.rigid.Tracked()) {
     std::uint32_t shape = accepted->shape;
     if (accepted->new_shape) shape = bodies.rigid.shapes().Insert(std::move(*accepted->new_shape));
     bodies.rigid.Append(shape, def.orientation.normalized(), def.angular_velocity);
     bodies.rigid.SetSpinRadius(index, bodies.SpinRadiusOf(index));
   }
   bodies.envelopes.Append(index, def.envelope);
-  bodies.ids.Append(index);
+  bodies.thrusts.Append(index, def.thrust_schedule);
+  const BodyId id = bodies.ids.Add(index);
   sparse_.queue().Resize(index + 1);  // the element's slot and prediction
   const bool larger = radius > max_radius_;
   max_radius_ = std::max(max_radius_, radius);
   if (started_) {
-    // A bigger body or the first envelope can change the broad phase, and the first body off
+    // A bigger body or the first envelope can change the broad phase, the first body off
     // straight lines (a thrust of its own, an envelope, a polyhedron) ends the fast paths that
-    // assume them: rebuild.
+    // assume them, and a body that engages must be engaged with every element it overlaps:
+    // rebuild.
     if (larger || (bodies.envelopes.Any() && sparse_.grid()) ||
-        (bodies.paths.StraightLines() && !bodies.AllOnStraightLines())) {
+        (bodies.paths.StraightLines() && !bodies.AllOnStraightLines()) ||
+        bodies.IsPolyhedron(index) || bodies.HasEnvelope(index)) {
       Start();
     } else {
       sparse_.AddElement(index);
       memory_.SetPeriod();
     }
   }
-  return BodyId{index, 0};
+  return id;
 }
 
 void World::Impl::Start() {
@@ -86,7 +95,7 @@ void World::Impl::Start() {
 
   // Rebase every path at the current time so that cells and predictions start from now.
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (bodies.rigid.Any()) {
+    if (bodies.rigid.Tracked()) {
       bodies.rigid.SetOrientation0(i, bodies.RigidPathOf(i).OrientationAt(now).normalized());
     }
     const Path path = bodies.paths.PathOf(i).RebasedAt(now);
@@ -97,7 +106,7 @@ void World::Impl::Start() {
   sparse_.Build(max_radius_);
   if (sparse_.grid()) memory_.Reorder();  // start in spatial order
   memory_.Restart();
-  if (bodies.rigid.Any()) detailed_.EngageOverlapping();
+  if (bodies.EngagesOnMeet()) detailed_.EngageOverlapping();
   for (std::uint32_t i = 0; i < n; ++i) sparse_.PredictFull(i);
 }
 
@@ -110,7 +119,7 @@ BodyState World::Impl::StateAt(std::uint32_t i, double t) const {
                   bodies.materials.Radius(i),
                   1.0 / bodies.materials.InvMass(i),
                   sparse_.PredictionOf(i).version};
-  if (bodies.rigid.Any()) {
+  if (bodies.rigid.Tracked()) {
     state.orientation = bodies.RigidPathOf(i).OrientationAt(t).normalized();
     state.angular_velocity = bodies.rigid.Omega(i);
   }
@@ -125,10 +134,10 @@ double World::Impl::KineticEnergy() const {
   for (const std::uint32_t i : bodies.ids.InPublicOrder()) {
     const double inv_mass = bodies.materials.InvMass(i);
     energy += 0.5 / inv_mass * bodies.paths.PathOf(i).VelocityAt(now).squaredNorm();
-    if (bodies.rigid.Any()) {
+    if (bodies.rigid.Tracked()) {
       const Eigen::Matrix3d r = bodies.RigidPathOf(i).OrientationAt(now).toRotationMatrix();
       const Vec3 w_B = r.transpose() * bodies.rigid.Omega(i);  // 1/2 w.I w in body axes
-      energy += 0.5 / inv_mass * w_B.dot(bodies.rigid.ShapeOf(i).unit_inertia * w_B);
+      energy += 0.5 / inv_mass * w_B.dot(bodies.UnitInertia(i) * w_B);
     }
   }
   return energy;
@@ -142,9 +151,9 @@ Vec3 World::Impl::AngularMomentum() const {
     const Path path = bodies.paths.PathOf(i);
     const double inv_mass = bodies.materials.InvMass(i);
     momentum += path.PositionAt(now).cross(path.VelocityAt(now)) / inv_mass;
-    if (bodies.rigid.Any()) {
+    if (bodies.rigid.Tracked()) {
       const Eigen::Matrix3d r = bodies.RigidPathOf(i).OrientationAt(now).toRotationMatrix();
-      momentum += r * (bodies.rigid.ShapeOf(i).unit_inertia * (r.transpose() * bodies.rigid.Omega(i))) /
+      momentum += r * (bodies.UnitInertia(i) * (r.transpose() * bodies.rigid.Omega(i))) /
                   inv_mass;
     }
   }
@@ -173,14 +182,38 @@ World& World::operator=(World&&) noexcept = default;
 
 Result<BodyId> World::AddBody(const BodyDef& def) { return impl_->AddBody(def); }
 Status World::AdvanceTo(double t) { return impl_->AdvanceTo(t); }
+Status World::RemoveBody(BodyId id) { return impl_->RemoveBody(id); }
+Status World::SetVelocity(BodyId id, const Vec3& velocity) {
+  return impl_->SetVelocity(id, velocity);
+}
+Status World::SetAngularVelocity(BodyId id, const Vec3& angular_velocity) {
+  return impl_->SetAngularVelocity(id, angular_velocity);
+}
+Status World::ApplyImpulse(BodyId id, const Vec3& impulse, const Vec3& point) {
+  return impl_->ApplyImpulse(id, impulse, point);
+}
+Status World::SetPose(BodyId id, const Vec3& position, const Eigen::Quaterniond& orientation) {
+  return impl_->SetPose(id, position, orientation);
+}
+Status World::SetThrust(BodyId id, const Vec3& thrust, const std::vector<ThrustChange>& schedule) {
+  return impl_->SetThrust(id, thrust, schedule);
+}
 BodyState World::StateAt(BodyId id, double t) const {
   SPARSEDYN_ASSERT(IsValid(id), "StateAt: invalid BodyId");
   return impl_->StateAt(impl_->core_.bodies.ids.InternalOf(id.index), t);
 }
 double World::Time() const { return impl_->core_.Now(); }
 std::size_t World::BodyCount() const { return impl_->core_.bodies.Size(); }
-bool World::IsValid(BodyId id) const { return id.index < impl_->core_.bodies.Size(); }
-BodyId World::IdOf(std::uint32_t index) const { return BodyId{index, 0}; }
+bool World::IsValid(BodyId id) const { return impl_->core_.bodies.ids.Valid(id); }
+BodyId World::IdOf(std::uint32_t index) const { return impl_->core_.bodies.ids.IdOfSlot(index); }
+std::size_t World::SlotCount() const { return impl_->core_.bodies.ids.SlotCount(); }
+std::vector<BodyId> World::Bodies() const {
+  std::vector<BodyId> ids;
+  for (std::uint32_t slot = 0; slot < SlotCount(); ++slot) {
+    if (const BodyId id = IdOf(slot); id.valid()) ids.push_back(id);
+  }
+  return ids;
+}
 void World::OnCollision(std::function<void(const CollisionEvent&)> callback) {
   impl_->core_.observers.OnCollision(std::move(callback));
 }
@@ -211,8 +244,8 @@ std::uint64_t World::StateHash() const {
   };
   mix_double(Time());
   mix(BodyCount());
-  for (std::uint32_t index = 0; index < BodyCount(); ++index) {
-    const BodyState s = StateAt(IdOf(index), Time());
+  for (const BodyId id : Bodies()) {
+    const BodyState s = StateAt(id, Time());
     mix_vector(s.position);
     mix_vector(s.velocity);
     mix_vector(s.acceleration);

@@ -36,6 +36,14 @@ class World::Impl {
   /// Checks the invariants at the current time (world/validation.cpp).
   Status Validate() const;
 
+  // --- changes between AdvanceTo calls (changes.cpp) ---
+  Status RemoveBody(BodyId id);
+  Status SetVelocity(BodyId id, const Vec3& velocity);
+  Status SetAngularVelocity(BodyId id, const Vec3& angular_velocity);
+  Status ApplyImpulse(BodyId id, const Vec3& impulse, const Vec3& point);
+  Status SetPose(BodyId id, const Vec3& position, const Eigen::Quaterniond& orientation);
+  Status SetThrust(BodyId id, const Vec3& thrust, const std::vector<ThrustChange>& schedule);
+
   // --- the event loop (event_loop.cpp) ---
   Status AdvanceTo(double t);
 
@@ -46,6 +54,13 @@ class World::Impl {
   /// AdvanceTo, and AddBody while running when the broad phase or the fast forms must change).
   void Start();
   void Dispatch(const QueueTop& top, bool engagement);
+  /// Body i's thrust changes as its schedule says (a kBodyTimer event).
+  void HandleThrustChange(std::uint32_t i);
+  /// The element of `id`, or an error naming the call and the handle.
+  Result<std::uint32_t> ElementOf(BodyId id, const char* call) const;
+  /// After a change of body i's path between runs: i predicts again (and its engagements), or
+  /// everything does when the change ends the fast forms of straight lines.
+  void AfterChange(std::uint32_t i);
   /// Element i's meeting: target-absent, an engagement, or the collision of two spheres.
   void HandleMeeting(std::uint32_t i);
   // The event loop's progress over windows of stall_event_limit events: a clock that stands
