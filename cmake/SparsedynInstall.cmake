@@ -22,3 +22,12 @@ install(FILES ${PROJECT_BINARY_DIR}/sparsedynConfig.cmake
 if(TARGET sparsedyn_cli)
   install(TARGETS sparsedyn_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
+# The web viewer: built into `sparsedyn view`, and installed as its two files too (the page
+# opens a .sdrec with its Open... button when served from anywhere).
+if(TARGET viewer AND SPARSEDYN_VIEWER_DIST)
+  install(FILES ${SPARSEDYN_VIEWER_DIST}/viewer.html ${SPARSEDYN_VIEWER_DIST}/viewer.js
+          DESTINATION ${CMAKE_INSTALL_DATADIR}/sparsedyn/viewer)
+endif()
+install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+
+include(cmake/SparsedynPackage.cmake)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Two gas_bench binaries against each other (docs/benchmarks.md "Measuring a change"): BM_Gas at
+# Two gas_bench binaries against each other (docs/lab/measurements.md "Measuring a change"): BM_Gas at
 # packing 0.05, both on one core at once, taking turns (SPARSEDYN_GAS_TURNS, see
 # bench/support/turns.hpp): each builds and settles its gas, then they time their stretches
 # in alternating slices of about a tenth of a second, so that the machine's swings, which

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The §7.3 feature-tracking benchmark (issue #3 part 7, docs/benchmarks.md): builds the `bench`
+# The §7.3 feature-tracking benchmark (issue #3 part 7, docs/lab/measurements.md): builds the `bench`
 # preset, runs closest_features_peers_bench (ours, FCL+libccd, FCL GJK and Bullet GJK in one
 # process; closest_features_bench, ours alone, when the peers are not installed) and writes
 #   docs/figures/closest_features.csv        one row per engine, angle and face count (medians)

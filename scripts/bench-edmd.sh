@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The gas against Smallenburg's EDMD on this machine (docs/benchmarks.md "EDMD on this machine"):
+# The gas against Smallenburg's EDMD on this machine (docs/lab/measurements.md "EDMD on this machine"):
 # EDMD's cell-list variant (Cell/mdCell.c, the faster of its codes at packing 0.05) and
 # gas_bench's BM_Gas on the same initial positions (gas_sph), both settled for 2 collisions per
 # particle, then timed taking turns on one core: gas_bench runs its stretch in slices
@@ -11,8 +11,8 @@
 # (/proc/PID/schedstat), and its rate is that of the lines printed while the turns ran.
 # Prints each round's collisions per CPU s, the ratio, and the medians.
 # Each switch costs the process that resumes its caches, EDMD more than gas_bench: with 30
-# slices EDMD ran ~10% below its rate alone at 10^4, ours ~3% (docs/benchmarks.md, twenty-
-# seventh measurement); hence 6 slices by default, and --alone, where each runs its whole stretch alone
+# slices EDMD ran ~10% below its rate alone at 10^4, ours ~3% (measured 2026-11-28,
+# docs/lab/measurements.md#twenty-seventh-measurement); hence 6 slices by default, and --alone, where each runs its whole stretch alone
 # on the core, one after the other (order alternating by round): no switch, but each in its own
 # seconds of the machine.
 #   scripts/bench-edmd.sh EDMD_DIR [--rounds R] [--sizes "10000 100000 1000000"] [--core C]

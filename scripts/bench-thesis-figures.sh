@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The thesis's figures (§7.0-§7.2, App. I.1; docs/benchmarks.md "The thesis's figures"): builds
+# The thesis's figures (§7.0-§7.2, App. I.1; docs/lab/measurements.md "The thesis's figures"): builds
 # thesis_figures (bench/scenes/thesis_figures.cpp) with the `bench` preset, runs it on the
 # thesis scene against N (D = 0.05) and against D (N = 1000), and writes
 #   docs/figures/thesis_figures_n.csv        one row per N: sparsedyn and the conventional method

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The thesis scene (§7) against Bullet (docs/benchmarks.md "The thesis scene against Bullet"):
+# The thesis scene (§7) against Bullet (docs/lab/measurements.md "The thesis scene against Bullet"):
 # builds thesis_bullet in the `bench` preset and runs it at N = 1000 (2 simulated seconds) and
 # N = 10000 (1 s), and with --large also N = 100000 (0.2 s), each with Bullet at 1/60 s and
 # 0.01 s steps and sparsedyn (reported unavailable until the World simulates polyhedra).

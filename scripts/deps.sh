@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Installs the Debian 12 packages the build needs, only those missing (apt-get, with sudo when
-# not root), then the web viewer's npm packages (npm ci in viewer/, from its package-lock.json)
+# not root): the compiler and libraries, the Python package's build tools (pybind11, numpy;
+# pytest and matplotlib for its tests and examples) and Doxygen for the API reference; then the web viewer's npm packages (npm ci in viewer/, from its package-lock.json)
 # when they are missing or older than the lock file. Run by scripts/run.sh, scripts/test.sh and
 # .ci/run.
 #   scripts/deps.sh            build + test dependencies
@@ -11,7 +12,9 @@ set -euo pipefail
 packages=(build-essential cmake pkg-config libeigen3-dev libqhull-dev libcli11-dev
           nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libassimp-dev
           libfcl-dev libccd-dev libbullet-dev libcgal-dev libgmp-dev libmpfr-dev
-          libcpp-httplib-dev python3)
+          libcpp-httplib-dev
+          python3-dev python3-venv python3-pybind11 python3-numpy python3-pytest
+          python3-matplotlib doxygen python3)
 if [[ "${1:-}" == "--peers" ]]; then
   packages+=(gnuplot-nox)
 fi

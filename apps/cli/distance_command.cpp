@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sparsedyn/geometry/convex_polyhedron.hpp"
+#include "sparsedyn/io/distance_summary.hpp"
 #include "sparsedyn/io/mesh_io.hpp"
 #include "sparsedyn/narrow/closest_features.hpp"
 
@@ -62,20 +63,6 @@ Result<std::shared_ptr<const ConvexPolyhedron>> LoadPolyhedron(const std::string
   return std::make_shared<const ConvexPolyhedron>(std::move(*polyhedron));
 }
 
-const char* StatusName(ClosestFeatures::Status status) {
-  switch (status) {
-    case ClosestFeatures::Status::kSeparated:
-      return "separated";
-    case ClosestFeatures::Status::kPenetrating:
-      return "penetrating";
-    case ClosestFeatures::Status::kIterationCap:
-      break;
-  }
-  return "iteration cap";
-}
-
-nlohmann::json VectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
 int Distance(const DistanceOptions& options) {
   auto fail = [](const std::string& message) {
     std::cerr << "sparsedyn distance: " << message << "\n";
@@ -93,17 +80,7 @@ int Distance(const DistanceOptions& options) {
   const TrackedPolyhedron tracked_a(*a), tracked_b(*b);
   const ClosestFeatures r = FindClosestFeatures(tracked_a, *X_WA, tracked_b, *X_WB);
   if (options.json) {
-    const nlohmann::json out = {
-        {"distance", r.distance},
-        {"status", StatusName(r.status)},
-        {"point_a", VectorJson(r.point_a)},
-        {"point_b", VectorJson(r.point_b)},
-        {"normal", VectorJson(r.normal)},
-        {"feature_a", ToString(r.features.a)},
-        {"feature_b", ToString(r.features.b)},
-        {"steps", r.steps},
-    };
-    std::cout << out.dump(2) << "\n";
+    std::cout << nlohmann::json::parse(DistanceSummaryJson(r)).dump(2) << "\n";
   } else {
     std::printf("%s: distance %.17g\n", StatusName(r.status), r.distance);
     std::printf("  A %s: %s, closest point (%.17g, %.17g, %.17g)\n", options.file_a.c_str(),

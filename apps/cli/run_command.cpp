@@ -16,10 +16,12 @@
 #include <string>
 
 #include "apps/cli/conventional_run.hpp"
+#include "apps/cli/progress.hpp"
 #include "apps/cli/run_options.hpp"
 #include "apps/cli/run_support.hpp"
 #include "scenes/presets.hpp"
 #include "sparsedyn/io/recording.hpp"
+#include "sparsedyn/io/run_summary.hpp"
 #include "sparsedyn/io/scene_file.hpp"
 
 namespace sparsedyn::cli {
@@ -38,9 +40,6 @@ struct Setup {
 // The scene file or the preset, and its World; an Error names the bad option or file.
 Result<Setup> MakeSetup(const RunOptions& options) {
   std::optional<Broadphase> broadphase;
-  if (options.broadphase == "hextree") {
-    return Error{"--broadphase hextree is not available yet"};
-  }
   if (options.broadphase) {
     broadphase = *options.broadphase == "allpairs" ? Broadphase::kAllPairs : Broadphase::kGrid;
   }
@@ -67,22 +66,6 @@ Result<Setup> MakeSetup(const RunOptions& options) {
   return Setup{std::move(*scene), std::move(*world), density};
 }
 
-// Advances in slices so that a terminal can show progress; the slices do not change the result
-// (AdvanceTo(t) processes the same events whatever the intermediate stops).
-Status AdvanceWithProgress(World& world, double until) {
-  const bool tty = isatty(STDERR_FILENO) != 0;
-  if (!tty) return world.AdvanceTo(until);
-  constexpr int kSlices = 50;
-  for (int s = 1; s <= kSlices; ++s) {
-    if (Status status = world.AdvanceTo(until * s / kSlices); !status) return status;
-    std::fprintf(stderr, "\r  t = %-10.4g %3d%%  events %llu", world.Time(), 2 * s,
-                 static_cast<unsigned long long>(world.Stats().events));
-    std::fflush(stderr);
-  }
-  std::fprintf(stderr, "\n");
-  return Status::Ok();
-}
-
 // The recording file to write: --record, or the default file for the default scene.
 std::string RecordingPath(const RunOptions& options) {
   if (options.no_record) return {};
@@ -91,47 +74,16 @@ std::string RecordingPath(const RunOptions& options) {
   return default_scene ? kDefaultRecording : std::string();
 }
 
-nlohmann::json Summary(const Setup& setup, const std::string& broadphase, double wall,
-                       double energy_initial, const Vec3& momentum_initial) {
-  const World& world = setup.world;
-  const Statistics& stats = world.Stats();
-  nlohmann::json kinds = nlohmann::json::object();
-  for (int k = 0; k < static_cast<int>(stats.events_by_kind.size()); ++k) {
-    kinds[EventKindName(k)] = stats.events_by_kind[static_cast<std::size_t>(k)];
-  }
-  const double collisions = static_cast<double>(stats.collisions + stats.wall_collisions);
-  return {
-      {"method", "event"},
-      {"preset", setup.scene.name},
-      {"bodies", world.BodyCount()},
-      {"density", setup.density},
-      {"seed", setup.scene.seed},
-      {"broadphase", broadphase},
-      {"simulated_time", world.Time()},
-      {"wall_seconds", wall},
-      {"events", stats.events},
-      {"events_by_kind", kinds},
-      {"stale_events", stats.stale_target_absent + stats.stale_actor_absent},
-      {"stale_target_absent", stats.stale_target_absent},
-      {"stale_actor_absent", stats.stale_actor_absent},
-      {"meetings", stats.meetings},
-      {"engagements_started", stats.engagements_started},
-      {"detail_predictions", stats.detail_predictions},
-      {"detail_iterations", stats.detail_iterations},
-      {"detail_checkpoints", stats.detail_checkpoints},
-      {"collisions", stats.collisions + stats.wall_collisions},
-      {"body_collisions", stats.collisions},
-      {"wall_collisions", stats.wall_collisions},
-      {"collisions_per_second", wall > 0 ? collisions / wall : 0.0},
-      {"events_per_second", wall > 0 ? static_cast<double>(stats.events) / wall : 0.0},
-      {"kinetic_energy_initial", energy_initial},
-      {"kinetic_energy_final", world.KineticEnergy()},
-      {"momentum_initial", VectorJson(momentum_initial)},
-      {"momentum_final", VectorJson(world.Momentum())},
-      {"max_penetration", world.MaxPenetration()},
-      {"bytes_per_body", static_cast<double>(world.MemoryBytes()) /
-                             static_cast<double>(std::max<std::size_t>(1, world.BodyCount()))},
-  };
+// The summary every run reports (RunSummaryJson, shared with the Python package).
+nlohmann::json Summary(const Setup& setup, double wall, double energy_initial,
+                       const Vec3& momentum_initial) {
+  const RunContext context{.preset = setup.scene.name,
+                           .density = setup.density,
+                           .seed = setup.scene.seed,
+                           .wall_seconds = wall,
+                           .kinetic_energy_initial = energy_initial,
+                           .momentum_initial = momentum_initial};
+  return nlohmann::json::parse(RunSummaryJson(setup.world, context));
 }
 
 void PrintSummary(const nlohmann::json& out) {
@@ -210,9 +162,7 @@ int Run(const RunOptions& options) {
     }
   }
 
-  const std::string broadphase =
-      world.Settings().broadphase == Broadphase::kAllPairs ? "allpairs" : "grid";
-  nlohmann::json out = Summary(*setup, broadphase, wall, energy_initial, momentum_initial);
+  nlohmann::json out = Summary(*setup, wall, energy_initial, momentum_initial);
   if (recorder) {
     out["recording"] = recording_path;
     out["recording_bytes"] = recorder->BytesWritten();
@@ -251,8 +201,8 @@ void AddRunCommand(CLI::App& app, const std::string& program) {
   run->add_option("--seed", options->seed, "Random seed");
   run->add_option("--until", options->until, "Simulated time to reach, s (default: the scene's)")
       ->check(CLI::Range(0.0, 1e12));
-  run->add_option("--broadphase", options->broadphase, "allpairs | grid | hextree")
-      ->check(CLI::IsMember({"allpairs", "grid", "hextree"}));
+  run->add_option("--broadphase", options->broadphase, "allpairs | grid")
+      ->check(CLI::IsMember({"allpairs", "grid"}));
   run->add_flag("--json", options->json, "Print one JSON object on stdout");
   run->add_option("--record", options->record_file,
                   std::string("Write a recording (docs/recording-format.md); the default scene "

@@ -6,6 +6,7 @@
 
 #include "apps/cli/run_options.hpp"
 #include "scenes/presets.hpp"
+#include "sparsedyn/io/run_summary.hpp"
 #include "sparsedyn/io/scene_file.hpp"
 #include "sparsedyn/types.hpp"
 
@@ -14,16 +15,8 @@ namespace sparsedyn::cli {
 /// A vector as a JSON array [x, y, z].
 inline nlohmann::json VectorJson(const Vec3& v) { return {v[0], v[1], v[2]}; }
 
-/// The packing fraction reported as "density": the scene's own, or the body volumes over the
-/// box volume (0 in open space).
-inline double PackingOf(const SceneDescription& scene) {
-  if (scene.packing) return *scene.packing;
-  const Container& box = scene.settings.container;
-  if (box.kind == Container::Kind::kOpen) return 0.0;
-  double volume = 0;
-  for (const SceneBody& body : scene.bodies) volume += scene.shapes[body.shape].Volume();
-  return volume / (box.hi - box.lo).prod();
-}
+/// The packing fraction reported as "density" (ReportedPacking, shared with Python).
+inline double PackingOf(const SceneDescription& scene) { return ReportedPacking(scene); }
 
 /// The preset the options ask for (--preset, --n, --density, --seed; "default" when none).
 inline scenes::PresetRequest PresetRequestOf(const RunOptions& options) {

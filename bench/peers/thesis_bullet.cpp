@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The thesis scene (scenes/thesis.hpp) in Bullet and in sparsedyn, one CSV line per run
-// (docs/benchmarks.md "The thesis scene against Bullet"; scripts/bench-thesis.sh runs it).
+// (docs/lab/measurements.md "The thesis scene against Bullet"; scripts/bench-thesis.sh runs it).
 //   thesis_bullet [--n N] [--density D] [--seed S] [--duration T] [--dt 60hz|SECONDS]...
 //                 [--no-sparsedyn] [--no-bullet] [--header]
 // Bullet runs once per --dt (default: 1/60 s and 0.01 s, a hundredth of a radius at mean speed

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The thesis's figures on the `thesis` scene (docs/benchmarks.md "The thesis's figures"):
+// The thesis's figures on the `thesis` scene (docs/lab/measurements.md "The thesis's figures"):
 //   --figure n        against N at density D: §7.0 CPU time per simulated second of sparsedyn
 //                     and of the conventional method at equal accuracy, §7.1 sparsedyn's cost
 //                     by phase, §7.2 collisions per simulated second, and the stale fraction;
@@ -27,7 +27,7 @@ namespace {
 using sparsedyn::bench::CollisionRecord;
 using sparsedyn::bench::PairCollision;
 
-// Equal accuracy (docs/benchmarks.md): the conventional method locates a contact to within
+// Equal accuracy (docs/lab/measurements.md "The thesis's figures"): the conventional method locates a contact to within
 // kTimeAccuracy by bisection, close to the World's contact tolerance (1e-9 of the summed radii
 // at speeds ~1), and must find the World's collisions exactly: its step starts at kFirstDt
 // (a tenth of the bounding radius at the mean speed) and is halved until it does.

@@ -16,20 +16,21 @@ namespace sparsedyn {
 /// How the conventional method steps: fixed steps of `dt`, and a collision found at the end of
 /// a step is located by bisection to `digits` more decimal digits (interval < dt 10^-digits).
 struct ConventionalSettings {
-  double dt = 1e-3;  // s, > 0
-  int digits = 4;    // A2 of App. I.2, in [0, 15]
+  double dt = 1e-3;  ///< s, > 0
+  int digits = 4;    ///< A2 of App. I.2, in [0, 15]
 };
 
 /// Counters of a ConventionalWorld (Stats()).
 struct ConventionalStatistics {
+  /// Time steps taken.
   std::uint64_t steps = 0;
-  std::uint64_t pair_tests = 0;             // bounding-box overlaps found by the broad phase
-  std::uint64_t narrow_queries = 0;         // closest-feature queries at step ends and re-checks
-  std::uint64_t bisection_evaluations = 0;  // distances evaluated while locating collisions
-  std::uint64_t collisions = 0;             // body-body impulses
-  std::uint64_t wall_collisions = 0;        // body-wall impulses
-  std::uint64_t walk_cap_hits = 0;          // closest-feature walks that hit their cap (0)
-  double max_penetration = 0.0;             // deepest overlap (pair or wall) seen at a step end, m
+  std::uint64_t pair_tests = 0;             ///< bounding-box overlaps found by the broad phase
+  std::uint64_t narrow_queries = 0;         ///< closest-feature queries at step ends and re-checks
+  std::uint64_t bisection_evaluations = 0;  ///< distances evaluated while locating collisions
+  std::uint64_t collisions = 0;             ///< body-body impulses
+  std::uint64_t wall_collisions = 0;        ///< body-wall impulses
+  std::uint64_t walk_cap_hits = 0;          ///< closest-feature walks that hit their cap (0)
+  double max_penetration = 0.0;  ///< deepest overlap (pair or wall) seen at a step end, m
 };
 
 /// Bodies moved in fixed time steps (§2.4). At the end of each step every body's pose is
@@ -42,9 +43,12 @@ struct ConventionalStatistics {
 /// Convex polyhedra only, in open space or a walled box (no spheres, no periodic box).
 class ConventionalWorld {
  public:
+  /// An empty world at time 0; check the settings first with CheckSettings.
   ConventionalWorld(const WorldSettings& settings, const ConventionalSettings& conventional);
   ~ConventionalWorld();
+  /// Moves the whole world.
   ConventionalWorld(ConventionalWorld&&) noexcept;
+  /// Moves the whole world.
   ConventionalWorld& operator=(ConventionalWorld&&) noexcept;
   ConventionalWorld(const ConventionalWorld&) = delete;
   ConventionalWorld& operator=(const ConventionalWorld&) = delete;
@@ -62,18 +66,24 @@ class ConventionalWorld {
   /// unbounded number of collisions (a stuck configuration).
   Status AdvanceTo(double t);
 
+  /// The state of `id` at t, within the current step (free flight from the last step end).
   BodyState StateAt(BodyId id, double t) const;
+  /// The time stepped to, s.
   double Time() const;
+  /// The number of bodies.
   std::size_t BodyCount() const;
+  /// The World settings it was made with.
   const WorldSettings& Settings() const;
+  /// The step and digits it was made with.
   const ConventionalSettings& Conventional() const;
 
   /// Called after every resolved collision (body-body and body-wall), in time order.
   void OnCollision(std::function<void(const CollisionEvent&)> callback);
 
+  /// The counters so far.
   const ConventionalStatistics& Stats() const;
-  double KineticEnergy() const;  // at Time(), translational + rotational
-  Vec3 Momentum() const;         // at Time()
+  double KineticEnergy() const;  ///< at Time(), translational + rotational
+  Vec3 Momentum() const;         ///< at Time()
 
  private:
   class Impl;

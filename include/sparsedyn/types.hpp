@@ -15,28 +15,36 @@ inline constexpr std::uint32_t kNoIndex = 0xffffffffu;
 
 /// Handle of a body in a World; passed by value. `generation` guards against slot reuse.
 struct BodyId {
+  /// The body's slot in the World (kNoIndex: no body); its row in per-body arrays.
   std::uint32_t index = kNoIndex;
+  /// Bumped when a slot is reused, so that an old handle is recognised as stale.
   std::uint32_t generation = 0;
+  /// Whether the handle names a slot at all (not whether the body still exists).
   bool valid() const { return index != kNoIndex; }
+  /// Handles are equal when slot and generation are.
   friend bool operator==(BodyId, BodyId) = default;
 };
 
 /// E(t) = e0 + e1 (t - t0) + e2 (t - t0)^2 / 2 >= 0 (App. F.1, F.3): how far the body may stray
 /// from its path P(t) during a segment that starts at t0. Each new segment starts it afresh.
 struct Envelope {
+  /// m: the growth at the segment start.
   double e0 = 0.0;
+  /// m/s: the growth rate.
   double e1 = 0.0;
+  /// m/s^2: the growth acceleration (a bound on unmodelled acceleration).
   double e2 = 0.0;
   /// The radius added to the bounding sphere `dt` after the segment start.
   double At(double dt) const { return e0 + dt * (e1 + 0.5 * e2 * dt); }
+  /// Whether the envelope adds nothing at any time.
   bool IsZero() const { return e0 == 0.0 && e1 == 0.0 && e2 == 0.0; }
 };
 
 /// A change of a body's own acceleration (App. F.3, a rocket's thrust): from `time` (s) on it is
 /// `thrust` (m/s^2, added to gravity).
 struct ThrustChange {
-  double time = 0.0;
-  Vec3 thrust = Vec3::Zero();
+  double time = 0.0;           ///< s
+  Vec3 thrust = Vec3::Zero();  ///< m/s^2, the body's own acceleration from `time` on
 };
 
 }  // namespace sparsedyn

@@ -17,17 +17,22 @@ namespace sparsedyn {
 
 /// Which elements an actor is compared with when it predicts its next meeting.
 enum class Broadphase {
-  kAllPairs,  // every other element (the thesis, O(N) per prediction)
-  kGrid,      // uniform cells with cell-crossing events (O(1) per event on average)
+  kAllPairs,  ///< every other element (the thesis, O(N) per prediction)
+  kGrid,      ///< uniform cells with cell-crossing events (O(1) per event on average)
 };
 
 /// The space the bodies live in.
 struct Container {
+  /// Open space, a box with static walls, or a periodic box.
   enum class Kind { kOpen, kWalledBox, kPeriodicBox };
+  /// Which of the three.
   Kind kind = Kind::kOpen;
+  /// The box's lowest corner, m (unused in open space).
   Vec3 lo = Vec3::Zero();
+  /// The box's highest corner, m (unused in open space).
   Vec3 hi = Vec3::Zero();
 
+  /// Open space: no walls, no periodic images.
   static Container Open() { return {}; }
   /// A box with six static, immovable walls (restitution of the body applies).
   static Container WalledBox(const Vec3& lo, const Vec3& hi) { return {Kind::kWalledBox, lo, hi}; }
@@ -53,24 +58,28 @@ enum class RotationModel {
 
 /// World-wide settings; plain data with defaults.
 struct WorldSettings {
+  /// Where the bodies live (open space by default).
   Container container;
+  /// How each prediction finds its candidates.
   Broadphase broadphase = Broadphase::kGrid;
-  Vec3 gravity = Vec3::Zero();  // m/s^2, applies to every body
+  Vec3 gravity = Vec3::Zero();  ///< m/s^2, applies to every body
   /// Bodies whose gap is below this fraction of their summed (bounding) radii touch: the contact
   /// tolerance.
   double contact_tolerance = 1e-9;
+  /// How polyhedra turn (see RotationModel).
   RotationModel rotation_model = RotationModel::kSphericalTop;
   /// Collisions approaching slower than this (m/s) are elastic: the collapse guard.
   double elastic_below_speed = 1e-6;
   /// Grid cells per body (the cells are never smaller than the largest interaction distance).
   /// More cells mean fewer pair tests per prediction but more cell crossings; 6 is as fast as 4
   /// for the gas at N = 10^4 and a little faster at 10^5-10^6 and in the thesis scene of
-  /// polyhedra, for 8 bytes more per body (docs/benchmarks.md, fourteenth measurement).
+  /// polyhedra, for 8 bytes more per body (measured 2026-11-26; the measurement log,
+  /// docs/lab/measurements.md, has the runs).
   double grid_cells_per_body = 6.0;
   /// Abort AdvanceTo with an error when this many events pass without the clock advancing by
   /// more than a relative 1e-12 (inelastic collapse or a stuck configuration): no hang.
   std::uint64_t stall_event_limit = 1u << 22;
-  bool profile_phases = false;  // measure Statistics::seconds_* (costs two clock reads an event)
+  bool profile_phases = false;  ///< measure Statistics::seconds_* (costs two clock reads an event)
   /// The clock's value when the World is made, s: a World built from the state of another at
   /// time t (a final scene written by `sparsedyn run --write-final-scene`) runs on from t.
   double start_time = 0.0;
@@ -78,45 +87,52 @@ struct WorldSettings {
 
 /// A body: a sphere of `radius`, or the convex polyhedron `shape`.
 struct BodyDef {
-  double radius = 0.5;                 // m; a sphere's radius (a polyhedron's is its bounding one)
+  double radius = 0.5;  ///< m; a sphere's radius (a polyhedron's is its bounding one)
   /// The polyhedron in its body frame, or null for a sphere. The World places it by its
   /// centroid: `position` is where the centroid goes. Shared between bodies of the same shape.
   std::shared_ptr<const ConvexPolyhedron> shape;
-  Vec3 position = Vec3::Zero();        // centre of mass, m
-  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // body to world, unit
-  Vec3 velocity = Vec3::Zero();        // m/s
-  Vec3 angular_velocity = Vec3::Zero();  // rad/s, world frame (polyhedra)
-  Vec3 thrust = Vec3::Zero();          // acceleration of its own (App. F.3), added to gravity
+  Vec3 position = Vec3::Zero();        ///< centre of mass, m
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body to world, unit
+  Vec3 velocity = Vec3::Zero();        ///< m/s
+  Vec3 angular_velocity = Vec3::Zero();  ///< rad/s, world frame (polyhedra)
+  Vec3 thrust = Vec3::Zero();          ///< acceleration of its own (App. F.3), added to gravity
   /// Later changes of `thrust`, times strictly increasing and not before the World's clock:
   /// each is an event of the body's.
   std::vector<ThrustChange> thrust_schedule;
-  double mass = 1.0;                   // kg
-  double restitution = 1.0;            // 1 = elastic; the collision uses the product of the two
-  double friction = 0.0;               // Coulomb coefficient; a pair uses sqrt(mu_a mu_b)
-  Envelope envelope;                   // growth of the bounding sphere beyond the body (App. F)
+  double mass = 1.0;                   ///< kg
+  double restitution = 1.0;            ///< 1 = elastic; the collision uses the product of the two
+  double friction = 0.0;               ///< Coulomb coefficient; a pair uses sqrt(mu_a mu_b)
+  Envelope envelope;                   ///< growth of the bounding sphere beyond the body (App. F)
 };
 
 /// A body's state evaluated from its path at some time.
 struct BodyState {
+  /// Centre of mass, m.
   Vec3 position = Vec3::Zero();
+  /// m/s.
   Vec3 velocity = Vec3::Zero();
+  /// m/s^2 (gravity plus thrust, unless a wall holds the body).
   Vec3 acceleration = Vec3::Zero();
-  double radius = 0.0;        // a sphere's radius or a polyhedron's bounding radius
+  double radius = 0.0;        ///< a sphere's radius or a polyhedron's bounding radius
+  /// kg.
   double mass = 0.0;
-  std::uint32_t version = 0;  // number of path changes (segments) so far
-  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // body to world
-  Vec3 angular_velocity = Vec3::Zero();  // rad/s, world frame
+  std::uint32_t version = 0;  ///< number of path changes (segments) so far
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body to world
+  Vec3 angular_velocity = Vec3::Zero();  ///< rad/s, world frame
 };
 
 /// A resolved collision, reported to OnCollision callbacks.
 struct CollisionEvent {
+  /// When the bodies touched, s.
   double time = 0.0;
+  /// The first body.
   BodyId a;
-  BodyId b;              // invalid for a wall collision
-  int wall = -1;         // 0..5 = -x,+x,-y,+y,-z,+z wall, or -1
+  BodyId b;              ///< invalid for a wall collision
+  int wall = -1;         ///< 0..5 = -x,+x,-y,+y,-z,+z wall, or -1
+  /// The contact point, world frame, m.
   Vec3 point = Vec3::Zero();
-  Vec3 normal = Vec3::Zero();   // unit, from a towards b (towards the wall)
-  double impulse = 0.0;         // N s along the normal
+  Vec3 normal = Vec3::Zero();   ///< unit, from a towards b (towards the wall)
+  double impulse = 0.0;         ///< N s along the normal
 };
 
 /// A new motion segment of one body: from `t0` on its centre follows
@@ -126,14 +142,19 @@ struct CollisionEvent {
 /// body is its BodyDef at the time it was added. In a periodic box positions are not wrapped
 /// into the box between segments: wrap them when drawing.
 struct MotionSegment {
+  /// When the segment starts, s.
   double t0 = 0.0;
+  /// Whose segment it is.
   BodyId body;
+  /// The centre at t0, m.
   Vec3 position = Vec3::Zero();
+  /// The velocity at t0, m/s.
   Vec3 velocity = Vec3::Zero();
+  /// Constant over the segment, m/s^2.
   Vec3 acceleration = Vec3::Zero();
-  std::uint32_t version = 0;  // the body's segment count after this change
-  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // at t0, body to world
-  Vec3 angular_velocity = Vec3::Zero();  // rad/s, world frame
+  std::uint32_t version = 0;  ///< the body's segment count after this change
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< at t0, body to world
+  Vec3 angular_velocity = Vec3::Zero();  ///< rad/s, world frame
 };
 
 /// Owns the bodies and runs the event loop: the sparse phase of the thesis (§3-§4) on the
@@ -142,9 +163,12 @@ struct MotionSegment {
 /// comes from its path.
 class World {
  public:
+  /// An empty World at time 0 with these settings.
   explicit World(const WorldSettings& settings = {});
   ~World();
+  /// Moves the whole World (its bodies, queue and callbacks).
   World(World&&) noexcept;
+  /// Moves the whole World (its bodies, queue and callbacks).
   World& operator=(World&&) noexcept;
   World(const World&) = delete;
   World& operator=(const World&) = delete;
@@ -186,6 +210,7 @@ class World {
   /// The state of `id` at time t >= Time() (or any t within its current segment).
   BodyState StateAt(BodyId id, double t) const;
 
+  /// The clock: the time the World has advanced to, s.
   double Time() const;
   /// The number of bodies the World holds.
   std::size_t BodyCount() const;
@@ -207,12 +232,14 @@ class World {
   /// StateAt of every body at the start, these segments reproduce every body's motion exactly.
   void OnSegment(std::function<void(const MotionSegment&)> callback);
 
+  /// The event loop's counters so far.
   const Statistics& Stats() const;
+  /// The settings the World was made with.
   const WorldSettings& Settings() const;
 
-  double KineticEnergy() const;   // at Time(), translational + rotational
-  Vec3 Momentum() const;          // at Time()
-  Vec3 AngularMomentum() const;   // at Time(), about the world origin
+  double KineticEnergy() const;   ///< at Time(), translational + rotational
+  Vec3 Momentum() const;          ///< at Time()
+  Vec3 AngularMomentum() const;   ///< at Time(), about the world origin
   /// The deepest overlap of two bodies (or a body and a wall) seen at any processed event, m.
   double MaxPenetration() const;
   /// Checks at Time() that no two bodies overlap beyond the contact tolerance and that every

@@ -19,7 +19,7 @@ namespace sparsedyn {
 /// 4 KB pages, an array beyond the reach of the address-translation cache (a few MB) costs a
 /// page-table walk on nearly every visit, on top of the cache miss. Measured with glibc's
 /// equivalent switch (GLIBC_TUNABLES=glibc.malloc.hugetlb=1) on the gas: +7% collisions per
-/// CPU s at N = 10^6, +10-20% at 10^5 (docs/benchmarks.md, tenth measurement).
+/// CPU s at N = 10^6, +10-20% at 10^5 (2026-11-25; docs/lab/measurements.md#tenth-measurement).
 ///
 /// Blocks under kHugePage bytes, which could not hold a whole huge page, come from the usual
 /// allocator. Larger ones start on a 2 MB boundary; the unused head of the alignment is address

@@ -196,7 +196,8 @@ void BasicCalendarQueue<Payload>::Refill() {
     // Its list becomes the current one (a heap if it is long). Each slot's record in the
     // owner's array is fetched on the way: its event reads it first, and at N = 10^4 (beyond a
     // core's second-level cache here) that read waited for memory in a fifth of the crossings'
-    // time (docs/benchmarks.md, twenty-eighth measurement).
+    // time, and fetching it here gave +2.3% at 10^4 on a Zen 5 (2026-11-28;
+    // docs/lab/measurements.md#twenty-eighth-measurement).
     for (std::uint32_t slot = heads_[b]; slot != kNoIndex;) {
       Entry& entry = entries_[slot];
       const std::uint32_t next = entry.next;

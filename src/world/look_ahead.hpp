@@ -52,7 +52,7 @@ inline void LookAhead::Fetch() const {
   // wait for the event), slower. The last stage for every event's 27 cells was 13% slower at
   // 10^5 (27 head loads, which wait when the heads have not arrived); for the 9 new cells of
   // crossings only, +2.5% at 10^5 and +7.3% at 10^6; a meeting's actor's 27 as well, even
-  // (docs/benchmarks.md, twenty-first measurement).
+  // (docs/lab/measurements.md#twenty-first-measurement).
   const Grid& grid = *sparse_.grid();
   std::uint32_t next[4];
   const int count = sparse_.queue().Upcoming(next, 4);

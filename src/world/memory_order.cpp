@@ -13,9 +13,9 @@ namespace {
 // While the data fit in the caches (fewer elements than the look-ahead's threshold) memory
 // order matters little, and a pass (~3M instructions at 10^4, the queue rebuilt, the caches
 // cold after it) costs more than it saves: the gas at 10^4 +1.4-2.4% every 256 events per
-// element (docs/benchmarks.md, fifteenth measurement), which still follows the diffusion.
-// Beyond the caches 64 against 32: 10^5 +0.8-2.5%, 10^6 +2.4% (eighteenth measurement; 16:
-// -2%, 128: +0.9% at 10^5).
+// element (docs/lab/measurements.md#fifteenth-measurement), which still follows the diffusion.
+// Beyond the caches 64 against 32: 10^5 +0.8-2.5%, 10^6 +2.4%; 16: -2%, 128: +0.9% at 10^5
+// (docs/lab/measurements.md#eighteenth-measurement).
 constexpr std::uint64_t kEventsPerElementBetweenReorders = 64;
 constexpr std::uint64_t kEventsPerElementBetweenReordersInCache = 256;
 

@@ -22,7 +22,7 @@ void SparsePhase::Build(double max_radius) {
   // mispredicted branches for instructions, a gain when the data are at hand (N = 10^4: +30%
   // collisions per CPU s) and a loss when each pair waits for main memory, where the branching
   // walk lets the processor run ahead to more misses (N = 10^6: -7%; 10^5: even). See
-  // docs/benchmarks.md, ninth measurement.
+  // docs/lab/measurements.md#ninth-measurement.
   batch_tests_ = straight_lines && n <= kBatchTestMaxElements;
 
   // The grid needs a box and bounded element radii (an envelope grows without bound).
@@ -54,7 +54,7 @@ void SparsePhase::Build(double max_radius) {
   }
   // The look-ahead (LookAhead) once the per-element data outgrow the caches: at N = 10^6 +14%
   // collisions per CPU s, at 10^5 +14%, at 6x10^4 about +10%; at 3x10^4 -5% and at 10^4 -7%,
-  // where the data are at hand anyway (docs/benchmarks.md, eleventh measurement).
+  // where the data are at hand anyway (docs/lab/measurements.md#eleventh-measurement).
   fetch_ahead_ = straight_lines && grid_ && n >= kFetchAheadMinElements;
   linear_finish_ = straight_lines && grid_ && !core_.Walled();
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The thesis scene (scenes/thesis.hpp) as a Bullet btDiscreteDynamicsWorld: what
-// docs/benchmarks.md "The thesis scene against Bullet" measures our engine against.
+// docs/lab/measurements.md "The thesis scene against Bullet" measures our engine against.
 
 #include <memory>
 #include <vector>

@@ -2,7 +2,7 @@
 #pragma once
 // Measures what a time-stepped engine did to the thesis scene, from the body poses after each
 // step (outside the timed part): the deepest penetration and the contacts it missed
-// (definitions in docs/benchmarks.md "The thesis scene against Bullet").
+// (definitions in docs/lab/measurements.md "The thesis scene against Bullet").
 
 #include <cstdint>
 #include <memory>

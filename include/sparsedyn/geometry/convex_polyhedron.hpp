@@ -21,15 +21,21 @@ enum class FeatureType : std::uint8_t { kVertex, kEdge, kFace, kNone };
 /// A vertex, edge or face of one ConvexPolyhedron, by type and index into that polyhedron's
 /// vertex, edge or face arrays. Passed by value.
 struct FeatureId {
+  /// Vertex, edge, face, or kNone for the interior.
   FeatureType type = FeatureType::kNone;
+  /// Index into the polyhedron's vertices, edges or faces (-1 for the interior).
   std::int32_t index = -1;
 
+  /// Vertex v.
   static constexpr FeatureId Vertex(std::int32_t v) { return {FeatureType::kVertex, v}; }
+  /// Edge e.
   static constexpr FeatureId Edge(std::int32_t e) { return {FeatureType::kEdge, e}; }
+  /// Face f.
   static constexpr FeatureId Face(std::int32_t f) { return {FeatureType::kFace, f}; }
   /// The interior of the polyhedron (the "neighbour" across a face plane).
   static constexpr FeatureId Interior() { return {FeatureType::kNone, -1}; }
 
+  /// Features are equal when type and index are.
   friend bool operator==(FeatureId, FeatureId) = default;
 };
 
@@ -38,7 +44,9 @@ std::string ToString(FeatureId feature);
 
 /// A plane {p : normal.dot(p) == offset} with a unit normal, in the polyhedron's frame.
 struct Plane {
+  /// Unit normal.
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  /// normal.dot(p) for every point p of the plane, m.
   double offset = 0.0;
 
   /// Signed distance of p from the plane, positive on the side the normal points to.
@@ -51,7 +59,9 @@ struct Plane {
 /// region's planes. A point that violates the plane (SignedDistance < 0) lies on the side of
 /// `neighbor`, the adjacent feature a closest-feature walk steps to.
 struct VoronoiPlane {
+  /// The bounding plane, its normal pointing into the region.
   Plane plane;
+  /// The adjacent feature on the other side of the plane.
   FeatureId neighbor;
 };
 
@@ -59,7 +69,9 @@ struct VoronoiPlane {
 /// vertices[0] to vertices[1] in its counter-clockwise loop, faces[1] from vertices[1] to
 /// vertices[0]. Edge e owns half-edges 2e (vertices[0] -> vertices[1], in faces[0]) and 2e+1.
 struct Edge {
+  /// The two end vertices.
   std::array<std::int32_t, 2> vertices{-1, -1};
+  /// The two faces that share the edge (see above for their order).
   std::array<std::int32_t, 2> faces{-1, -1};
 };
 
@@ -135,19 +147,31 @@ class ConvexPolyhedron {
 
   /// @name Features and adjacency
   /// @{
+
+  /// Number of vertices V.
   int vertex_count() const { return static_cast<int>(vertices_.size()); }
+  /// Number of edges E.
   int edge_count() const { return static_cast<int>(edges_.size()); }
+  /// Number of faces F (V - E + F = 2).
   int face_count() const { return static_cast<int>(faces_.size()); }
+  /// Number of half-edges (2E).
   int half_edge_count() const { return static_cast<int>(half_edges_.size()); }
 
   /// Position of vertex v in the body frame.
   const Eigen::Vector3d& vertex(int v) const { return vertices_[Index(v)]; }
+  /// All vertex positions in the body frame, by index.
   std::span<const Eigen::Vector3d> vertices() const { return vertices_; }
+  /// Edge e.
   const Edge& edge(int e) const { return edges_[Index(e)]; }
+  /// All edges, by index.
   std::span<const Edge> edges() const { return edges_; }
+  /// Face f.
   const Face& face(int f) const { return faces_[Index(f)]; }
+  /// All faces, by index.
   std::span<const Face> faces() const { return faces_; }
+  /// Half-edge h (edge e owns 2e and 2e + 1).
   const HalfEdge& half_edge(int h) const { return half_edges_[Index(h)]; }
+  /// All half-edges, by index.
   std::span<const HalfEdge> half_edges() const { return half_edges_; }
 
   /// Boundary half-edges of face f in counter-clockwise order seen from outside.
@@ -173,6 +197,7 @@ class ConvexPolyhedron {
 
   /// @name Voronoi regions (zones)
   /// @{
+
   /// The planes bounding the Voronoi region of a feature; a point is in the (closed) region iff
   /// every plane's SignedDistance is >= 0. The order is fixed so a walk can index it:
   /// - vertex v: one plane per incident edge, in VertexEdges(v) order; the plane passes through
@@ -189,9 +214,11 @@ class ConvexPolyhedron {
   std::span<const VoronoiPlane> VertexPlanes(int v) const {
     return PlanesFrom(vertex_plane_first_[Index(v)], vertex_plane_first_[Index(v) + 1]);
   }
+  /// The Voronoi planes of edge e (four).
   std::span<const VoronoiPlane> EdgePlanes(int e) const {
     return PlanesFrom(edge_plane_first_ + 4 * e, edge_plane_first_ + 4 * e + 4);
   }
+  /// The Voronoi planes of face f (its plane, then one per boundary edge).
   std::span<const VoronoiPlane> FacePlanes(int f) const {
     return PlanesFrom(face_plane_first_[Index(f)], face_plane_first_[Index(f) + 1]);
   }
@@ -199,6 +226,7 @@ class ConvexPolyhedron {
 
   /// @name Geometry and mass properties (uniform density 1; scale by the density)
   /// @{
+
   /// Enclosed volume (> 0).
   double volume() const { return volume_; }
   /// Centre of mass for uniform density, in the body frame.
@@ -219,6 +247,7 @@ class ConvexPolyhedron {
 
   /// @name Queries
   /// @{
+
   /// The point of a feature closest to p (body frame); for a face, the closest point of the
   /// (filled) polygon. Brute force over the feature's boundary: O(size of the feature).
   Eigen::Vector3d ClosestPointOnFeature(FeatureId feature, const Eigen::Vector3d& p) const;
@@ -233,6 +262,7 @@ class ConvexPolyhedron {
 
   /// @name Copies and export
   /// @{
+
   /// A copy translated so that its centroid is the origin (feature indices unchanged).
   ConvexPolyhedron Recentered() const;
   /// A copy scaled uniformly about the origin of its frame by factor > 0 (indices unchanged).

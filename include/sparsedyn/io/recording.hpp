@@ -27,7 +27,9 @@ inline constexpr std::string_view kRecordingMagic{"SDREC\r\n\x1a", 8};
 
 /// A shape of the recording header's `shapes` table.
 struct RecordingShape {
+  /// A sphere of `radius`, or the polyhedron `mesh`.
   enum class Kind { kSphere, kPolyhedron };
+  /// Which of the two.
   Kind kind = Kind::kSphere;
   double radius = 0.0;  ///< sphere radius, m
   /// Polyhedron in its body frame (centroid at the origin), faces counter-clockwise from outside.
@@ -36,13 +38,19 @@ struct RecordingShape {
 
 /// The recording header (its JSON part, docs/recording-format.md "Header JSON").
 struct RecordingHeader {
+  /// The program and version that wrote the recording.
   std::string generator = "sparsedyn 0.1.0";
   std::string scene;  ///< preset name or scene file name
+  /// The scene's seed.
   std::uint64_t seed = 0;
   std::uint32_t bodies = 0;  ///< number of body records that follow the header
+  /// The World's container.
   Container container;
+  /// The World's gravity, m/s^2.
   Vec3 gravity = Vec3::Zero();
+  /// The distinct shapes; bodies refer to them by index.
   std::vector<RecordingShape> shapes;
+  /// The time of the first segments, s.
   double start_time = 0.0;
   double end_time = 0.0;  ///< the time the run was asked to reach
 };
@@ -59,12 +67,17 @@ struct RecordedBody {
 /// position + velocity (t - t0) + acceleration (t - t0)^2 / 2, rotating at angular_velocity
 /// (world frame) from `orientation` at t0.
 struct RecordedSegment {
+  /// The body's index (its RecordedBody).
   std::uint32_t body = 0;
+  /// When the segment starts, s.
   double t0 = 0.0;
   Vec3 position = Vec3::Zero();  ///< world frame; in a periodic box not wrapped into the box
+  /// At t0, m/s.
   Vec3 velocity = Vec3::Zero();
+  /// Constant over the segment, m/s^2.
   Vec3 acceleration = Vec3::Zero();
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< (w, x, y, z)
+  /// rad/s, world frame, constant over the segment.
   Vec3 angular_velocity = Vec3::Zero();
   bool has_acceleration = false;  ///< flags bit 0: acceleration is stored
   bool has_rotation = false;      ///< flags bit 1: orientation and angular velocity are stored
@@ -81,6 +94,7 @@ struct RecordedSegment {
 
 /// A resolved collision (tag 2).
 struct RecordedCollision {
+  /// When the bodies touched, s.
   double time = 0.0;
   std::uint32_t a = 0;         ///< body index
   std::uint32_t b = 0;         ///< body index, or wall index 0..5 (-x,+x,-y,+y,-z,+z) if b_is_wall
@@ -95,7 +109,9 @@ using RecordingRecord = std::variant<RecordedSegment, RecordedCollision>;
 
 /// A whole recording as read from a file.
 struct Recording {
+  /// The header.
   RecordingHeader header;
+  /// One record per body, in body order.
   std::vector<RecordedBody> bodies;
   std::vector<RecordingRecord> records;  ///< segments and collisions, in file (= event) order
   double end_time = 0.0;                 ///< from the end record
@@ -110,8 +126,8 @@ std::pair<RecordingHeader, std::vector<RecordedBody>> DescribeForRecording(const
 
 /// The header and body records of a scene before it runs (start_time 0): its shapes table as it
 /// is (polyhedra as their meshes in the body frame, centroid at the origin) and every body's
-/// mass and bounding radius. Polyhedral scenes are described already; issue #4 adds their
-/// orientation and angular velocity to the segments (RecordedSegment::has_rotation).
+/// mass and bounding radius. The segments of polyhedra carry their orientation and angular
+/// velocity (RecordedSegment::has_rotation).
 std::pair<RecordingHeader, std::vector<RecordedBody>> DescribeForRecording(
     const SceneDescription& scene, double end_time);
 
@@ -130,7 +146,9 @@ class RecordingWriter {
                                       const RecordingHeader& header,
                                       const std::vector<RecordedBody>& bodies);
 
+  /// Moves the open file.
   RecordingWriter(RecordingWriter&&) noexcept;
+  /// Moves the open file.
   RecordingWriter& operator=(RecordingWriter&&) noexcept;
   ~RecordingWriter();
 
@@ -142,7 +160,9 @@ class RecordingWriter {
 
   /// Appends one record. Records must come in event order (non-decreasing time).
   void Write(const RecordedSegment& segment);
+  /// Appends the World's segment as a RecordedSegment.
   void Write(const MotionSegment& segment);
+  /// Appends the World's collision as a RecordedCollision.
   void Write(const CollisionEvent& collision);
 
   /// Writes the end record and closes the file; an Error names the path on any I/O failure.

@@ -20,7 +20,9 @@ namespace sparsedyn {
 /// A shape of a scene: a sphere or a convex polyhedron, built from the spec the scene gives
 /// (docs/scene-format.md "Shapes"). Immutable once built; bodies refer to it by index.
 struct SceneShape {
+  /// A sphere or a convex polyhedron.
   enum class Kind { kSphere, kPolyhedron };
+  /// Which of the two.
   Kind kind = Kind::kSphere;
   /// Sphere radius, m; for a polyhedron its bounding radius about the centroid.
   double radius = 0.0;
@@ -36,8 +38,8 @@ struct SceneShape {
 };
 
 /// A body of a scene: everything docs/scene-format.md lets a body say, resolved (defaults
-/// applied, density turned into mass). Fields the sphere World does not use yet (orientation,
-/// angular velocity, friction) are kept for the polyhedral World of issue #4.
+/// applied, density turned into mass). Spheres ignore orientation, angular velocity and
+/// friction (they are frictionless); polyhedra use them all.
 struct SceneBody {
   std::uint32_t shape = 0;       ///< index into SceneDescription::shapes
   Vec3 position = Vec3::Zero();  ///< centre of mass in the world frame, m
@@ -48,7 +50,7 @@ struct SceneBody {
   double mass = 1.0;              ///< kg (from "mass", or "density" x volume)
   std::optional<double> density;  ///< kg/m^3 when the file gave a density
   double restitution = 1.0;       ///< in [0, 1]
-  double friction = 0.0;          ///< Coulomb coefficient >= 0 (issue #4)
+  double friction = 0.0;          ///< Coulomb coefficient >= 0 (polyhedra)
 };
 
 /// A scene as a file describes it: the World's settings, shapes, bodies and how long to run.
@@ -57,8 +59,11 @@ struct SceneDescription {
   std::uint64_t seed = 1;         ///< default seed of random generators; reported
   std::optional<double> packing;  ///< informational packing fraction, reported as "density"
   double duration = 10.0;         ///< simulated seconds `sparsedyn run` advances by default
+  /// The World's settings (container, gravity, broad phase, tolerances).
   WorldSettings settings;
+  /// The distinct shapes; bodies refer to them by index.
   std::vector<SceneShape> shapes;
+  /// Every body, in the order BuildWorld adds them.
   std::vector<SceneBody> bodies;
 
   /// Adds `shape` unless one with the same spec is there; returns its index.
@@ -100,8 +105,7 @@ BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index);
 
 /// A World holding the scene's bodies, added in order. Nothing is returned half-built: an Error
 /// names the body ("bodies[12]: ...") when the World refuses it (overlap, outside the
-/// container...). Polyhedral bodies are refused: the World simulates spheres only until
-/// issue #4.
+/// container, a World mixing spheres and polyhedra...).
 Result<World> BuildWorld(const SceneDescription& scene);
 
 }  // namespace sparsedyn

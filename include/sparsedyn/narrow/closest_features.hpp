@@ -17,43 +17,52 @@ namespace sparsedyn {
 
 /// One feature of each polyhedron.
 struct FeaturePair {
+  /// The feature of A.
   FeatureId a;
+  /// The feature of B.
   FeatureId b;
+  /// Pairs are equal when both features are.
   friend bool operator==(const FeaturePair&, const FeaturePair&) = default;
 };
 
 /// What a closest-feature query found.
 struct ClosestFeatures {
+  /// How the query ended.
   enum class Status : std::uint8_t {
-    kSeparated,      // distance > 0
-    kPenetrating,    // distance <= 0: the polyhedra touch or overlap; distance = -depth
-    kIterationCap,   // the walk did not finish within ClosestFeaturesOptions::max_steps
+    kSeparated,      ///< distance > 0
+    kPenetrating,    ///< distance <= 0: the polyhedra touch or overlap; distance = -depth
+    kIterationCap,   ///< the walk did not finish within ClosestFeaturesOptions::max_steps
   };
+  /// How the query ended.
   Status status = Status::kSeparated;
-  double distance = 0.0;                              // signed; negative = penetration depth
-  Eigen::Vector3d point_a = Eigen::Vector3d::Zero();  // witness on A, world frame
-  Eigen::Vector3d point_b = Eigen::Vector3d::Zero();  // witness on B, world frame
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // unit, world frame, from A towards B
-  FeaturePair features;                               // the closest feature pair
-  int steps = 0;                                      // walk steps taken (features visited - 1)
+  double distance = 0.0;                              ///< signed; negative = penetration depth
+  Eigen::Vector3d point_a = Eigen::Vector3d::Zero();  ///< witness on A, world frame
+  Eigen::Vector3d point_b = Eigen::Vector3d::Zero();  ///< witness on B, world frame
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  ///< unit, world frame, from A towards B
+  FeaturePair features;                               ///< the closest feature pair
+  int steps = 0;                                      ///< walk steps taken (features visited - 1)
 };
 
 /// How the walk starts and when it gives up.
 struct ClosestFeaturesOptions {
-  int max_steps = 10000;             // iteration cap: beyond it Status::kIterationCap
-  bool use_angle_tables = true;      // App. J.1.1 for faces and vertices with many edges
-  bool use_direction_table = true;   // App. J.1.2 for cold starts
+  int max_steps = 10000;             ///< iteration cap: beyond it Status::kIterationCap
+  bool use_angle_tables = true;      ///< App. J.1.1 for faces and vertices with many edges
+  bool use_direction_table = true;   ///< App. J.1.2 for cold starts
 };
 
 /// A ConvexPolyhedron with the tables the walk uses (App. J.1.1 angle tables, App. J.1.2
 /// direction -> starting feature table), built once and shared by every pair it takes part in.
 class TrackedPolyhedron {
  public:
+  /// Builds the tables of `polyhedron` (shared, not copied).
   explicit TrackedPolyhedron(std::shared_ptr<const ConvexPolyhedron> polyhedron);
   ~TrackedPolyhedron();
+  /// Moves the polyhedron and its tables.
   TrackedPolyhedron(TrackedPolyhedron&&) noexcept;
+  /// Moves the polyhedron and its tables.
   TrackedPolyhedron& operator=(TrackedPolyhedron&&) noexcept;
 
+  /// The polyhedron.
   const ConvexPolyhedron& polyhedron() const { return *polyhedron_; }
   /// The feature the J.1.2 table proposes as closest to a far point in body-frame direction d.
   FeatureId StartingFeature(const Eigen::Vector3d& direction_B) const;
@@ -62,7 +71,7 @@ class TrackedPolyhedron {
   /// instead of one per vertex.
   int SupportVertex(const Eigen::Vector3d& direction_B) const;
 
-  class Tables;  // defined in src/narrow/
+  class Tables;  ///< defined in src/narrow/
   const Tables& tables() const { return *tables_; }
 
  private:
@@ -90,16 +99,22 @@ std::string DescribeQuery(const TrackedPolyhedron& a, const Pose& X_WA, const Tr
 /// steps and iteration-cap failures (tests assert the last stays 0).
 class ClosestFeatureTracker {
  public:
+  /// Follows a and b (both must outlive the tracker); the first Update cold-starts.
   ClosestFeatureTracker(const TrackedPolyhedron& a, const TrackedPolyhedron& b,
                         ClosestFeaturesOptions options = {});
 
+  /// The closest features at these poses, warm-started from the last answer.
   const ClosestFeatures& Update(const Pose& X_WA, const Pose& X_WB);
   /// Forget the cached pair: the next Update cold-starts.
   void Reset() { has_last_ = false; }
+  /// The last answer.
   const ClosestFeatures& last() const { return last_; }
 
+  /// Update calls so far.
   std::uint64_t calls() const { return calls_; }
+  /// Walk steps over all calls.
   std::uint64_t steps() const { return steps_; }
+  /// Calls that hit the iteration cap (0 in every test).
   std::uint64_t iteration_cap_failures() const { return cap_failures_; }
   /// DescribeQuery() of the last query that hit the iteration cap; empty if none did.
   const std::string& last_failure() const { return last_failure_; }
