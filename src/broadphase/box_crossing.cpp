@@ -12,10 +12,12 @@ namespace {
 // Numerical Algorithms", §2.2).
 constexpr double kU = 0x1.0p-53;
 
-// The neighbouring doubles: for a value within half an ulp of an exact one, Up is >= it and
-// Down <= it.
-double Up(double x) { return std::nextafter(x, kInfinity); }
-double Down(double x) { return std::nextafter(x, -kInfinity); }
+// At least one ulp up or down: for a value within half an ulp of an exact one, Up is >= it and
+// Down <= it. The exact x + |x| 2^-52 is at least x + ulp(x) (|x| >= 2^e, ulp(x) = 2^(e-52)),
+// a double, so rounding to nearest cannot fall below it; no call to nextafter (this runs six
+// times per box). The absolute 1e-300 covers underflow, far below any time or length here.
+double Up(double x) { return x + (std::abs(x) * 0x1.0p-52 + 1e-300); }
+double Down(double x) { return x - (std::abs(x) * 0x1.0p-52 + 1e-300); }
 
 // x raised by its bound e, no smaller than the exact sum (exactly x when e is 0).
 double Raised(double x, double e) { return e == 0.0 ? x : Up(x + e); }
@@ -108,7 +110,8 @@ double BoxCrossing::Entry(const Aabb& box, double horizon) const {
   // The intersection of closed intervals starts at the start of one of them (or at 0): the
   // earliest such start that every set holds.
   auto all_hold = [&](double dt) {
-    return std::all_of(sets.begin(), sets.end(), [dt](const DtIntervals& s) { return s.Holds(dt); });
+    return std::all_of(sets.begin(), sets.end(),
+                       [dt](const DtIntervals& s) { return s.Holds(dt); });
   };
   if (all_hold(0.0)) return 0.0;
   double best = kInfinity;
@@ -124,7 +127,8 @@ double BoxCrossing::Exit(const Aabb& box) const {
   double exit = kInfinity;
   for (const DtIntervals& s : Sets(box)) {
     // The interval that holds 0 (its slots are disjoint and do not touch).
-    const int slot = s.lo[0] <= 0.0 && 0.0 <= s.hi[0] ? 0 : (s.lo[1] <= 0.0 && 0.0 <= s.hi[1] ? 1 : -1);
+    const int slot =
+        s.lo[0] <= 0.0 && 0.0 <= s.hi[0] ? 0 : (s.lo[1] <= 0.0 && 0.0 <= s.hi[1] ? 1 : -1);
     if (slot < 0) return 0.0;
     exit = std::min(exit, s.hi[static_cast<std::size_t>(slot)]);
   }
@@ -139,7 +143,8 @@ Aabb BoxCrossing::Swept(double horizon) const {
   };
   double reach = radius(0.0) + radius_error(0.0);
   const bool grows_forever = m_.r2 > 0.0 || (m_.r2 == 0.0 && m_.r1 > 0.0);
-  if (!std::isfinite(horizon) && grows_forever) return Aabb{Vec3::Constant(-kInfinity), Vec3::Constant(kInfinity)};
+  if (!std::isfinite(horizon) && grows_forever)
+    return Aabb{Vec3::Constant(-kInfinity), Vec3::Constant(kInfinity)};
   if (std::isfinite(horizon)) reach = std::max(reach, radius(horizon) + radius_error(horizon));
   if (m_.r2 < 0.0) {
     const double top = -m_.r1 / m_.r2;

@@ -39,13 +39,14 @@ struct Aabb {
   }
 };
 
-/// The dt in [0, horizon] at which the sets below say the test holds. kInfinity: never.
 /// A set {dt >= 0 : f(dt) >= 0} of one quadratic, as at most two closed intervals (an empty
 /// slot has lo > hi); a superset of the exact set.
 struct DtIntervals {
   std::array<double, 2> lo{kInfinity, kInfinity};
   std::array<double, 2> hi{-kInfinity, -kInfinity};
-  bool Holds(double dt) const { return (lo[0] <= dt && dt <= hi[0]) || (lo[1] <= dt && dt <= hi[1]); }
+  bool Holds(double dt) const {
+    return (lo[0] <= dt && dt <= hi[0]) || (lo[1] <= dt && dt <= hi[1]);
+  }
 };
 
 /// {dt >= 0 : c + b dt + A dt^2 >= 0}, a superset of the exact set of the polynomial whose

@@ -104,7 +104,8 @@ void StaticTree::Build() {
 }
 
 std::uint32_t StaticTree::BuildLeaf(std::size_t begin, std::size_t end, const Aabb& box) {
-  nodes_.push_back({box, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end - begin)});
+  nodes_.push_back(
+      {box, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end - begin)});
   return static_cast<std::uint32_t>(nodes_.size() - 1);
 }
 
@@ -188,8 +189,8 @@ std::size_t StaticTree::SahSplit(std::size_t begin, std::size_t end, const Aabb&
   for (int k = kBins - 1; k > 0; --k) {
     grown.Grow(bins[static_cast<std::size_t>(k)]);
     n += counts[static_cast<std::size_t>(k)];
-    const double cost = left_cost[static_cast<std::size_t>(k - 1)] +
-                        grown.HalfArea() * static_cast<double>(n);
+    const double cost =
+        left_cost[static_cast<std::size_t>(k - 1)] + grown.HalfArea() * static_cast<double>(n);
     if (n < end - begin && n > 0 && cost < best_cost) {
       best_cost = cost;
       best = k - 1;
@@ -203,7 +204,8 @@ std::size_t StaticTree::SahSplit(std::size_t begin, std::size_t end, const Aabb&
 }
 
 std::size_t StaticTree::MemoryBytes() const {
-  return nodes_.capacity() * sizeof(Node) + (prims_.capacity() + pending_.capacity()) * sizeof(Prim) +
+  return nodes_.capacity() * sizeof(Node) +
+         (prims_.capacity() + pending_.capacity()) * sizeof(Prim) +
          slot_.capacity() * sizeof(std::uint32_t);
 }
 

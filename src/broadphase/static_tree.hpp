@@ -103,7 +103,7 @@ class StaticTree {
     std::uint32_t index = kNoIndex;  // kNoIndex: removed since the build
   };
   static constexpr std::uint32_t kPending = 0x80000000u;  // slot_ bit: in pending_
-  static constexpr int kMaxDepth = 100;                    // deeper: a leaf of what is left
+  static constexpr int kMaxDepth = 100;                   // deeper: a leaf of what is left
   static constexpr std::size_t kStack = 128;
 
   std::uint32_t BuildNode(std::size_t begin, std::size_t end, int depth);
@@ -113,8 +113,8 @@ class StaticTree {
   void RebuildIfWorn();
 
   std::vector<Node> nodes_;
-  std::vector<Prim> prims_;        // in tree order
-  std::vector<Prim> pending_;      // inserted since the last build
+  std::vector<Prim> prims_;          // in tree order
+  std::vector<Prim> pending_;        // inserted since the last build
   std::vector<std::uint32_t> slot_;  // by index: position in prims_, or kPending | in pending_
   std::size_t live_ = 0, dead_ = 0;
   int depth_ = 0;
@@ -145,14 +145,14 @@ StaticTree::Entry StaticTree::FirstEntry(const Mover& mover, double dt_limit, co
   };
   std::array<Item, kStack> stack;
   std::size_t top = 0;
-  auto push = [&](std::uint32_t n) {
+  auto enter = [&](std::uint32_t n) {  // a node's entry, counted
     const Aabb& b = nodes_[n].box;
     if (!b.Overlaps(swept)) return kInfinity;
     ++count.nodes;
     return crossing.Entry(b, std::min(dt_limit, best.dt));
   };
   if (!nodes_.empty()) {
-    const double root = push(0);
+    const double root = enter(0);
     if (root < best.dt) stack[top++] = {0, root};
   }
   while (top > 0) {
@@ -166,7 +166,7 @@ StaticTree::Entry StaticTree::FirstEntry(const Mover& mover, double dt_limit, co
       continue;
     }
     const std::uint32_t left = item.node + 1, right = node.first;
-    const double dt_left = push(left), dt_right = push(right);
+    const double dt_left = enter(left), dt_right = enter(right);
     const bool left_first = dt_left <= dt_right;
     const Item near{left_first ? left : right, left_first ? dt_left : dt_right};
     const Item far{left_first ? right : left, left_first ? dt_right : dt_left};

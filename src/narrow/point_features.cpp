@@ -29,7 +29,7 @@ struct Candidate {
   FeatureId feature;
   Vec3 point = Vec3::Zero();
   double distance = 0.0;
-  int slot = -1;                            // face: FacePoint::edge_slot
+  int slot = -1;                                // face: FacePoint::edge_slot
   FaceVerdict verdict = FaceVerdict::kUnknown;  // face: its zone test, decided by the point
 };
 
@@ -51,8 +51,8 @@ class PointWalk {
     best_ = current_.distance;
     while (true) {
       if (steps_ >= max_steps_) return BruteForce();
-      const narrow::ZoneTest test = narrow::TestZone(poly_, tables_, current_.feature, q_,
-                                                     current_.slot, current_.verdict);
+      const narrow::ZoneTest test =
+          narrow::TestZone(poly_, tables_, current_.feature, q_, current_.slot, current_.verdict);
       if (test.result == narrow::ZoneTest::Result::kInZone) return Outside(current_);
       narrow::Moves moves;
       if (test.result == narrow::ZoneTest::Result::kOneMove) {
@@ -119,9 +119,18 @@ class PointWalk {
 
   // Over a face but behind its plane: the point is inside (no face plane has it strictly in
   // front), or the walk is at V-Clip's local minimum and jumps to the face whose plane has the
-  // point farthest in front, restarting the potential there. Argmax is deterministic, so a
-  // repeated target would repeat the walk: the search of every face ends it instead.
+  // point farthest in front, restarting the potential there (the pair walk's rule, also in
+  // not escaping within round-off of touching). Argmax is deterministic, so a repeated target
+  // would repeat the walk: the search of every face ends it instead.
   Step Escape() {
+    // Behind the face by no more than round-off: the point is on the surface (to round-off),
+    // and |height| is its distance within twice that; no escape, which could only bounce
+    // between faces that round-off puts on either side of the point.
+    if (current_.distance <= tolerance_) {
+      escape_face_ = current_.feature.index;
+      escape_height_ = -current_.distance;
+      return Step::kInside;
+    }
     int face = 0;
     double height = -std::numeric_limits<double>::infinity();
     for (int f = 0; f < poly_.face_count(); ++f) {

@@ -42,10 +42,12 @@ struct PointClosest {
 /// feature repeats; an escape (the point over a face but behind its plane) jumps to the face
 /// whose plane the point is farthest in front of, or reports the point inside when there is
 /// none; a second escape to the same face, a lower step that round-off makes look longer than
-/// the allowance, or options.max_steps steps, ends in a search of every face. So the walk always terminates, and the answer does not depend on the start.
-/// Method and measured figures: docs/narrow-phase.md#a-sphere-against-a-polyhedron.
+/// the allowance, or options.max_steps steps, ends in a search of every face. So the walk always
+/// terminates, and the answer does not depend on the start. Method and measured figures:
+/// docs/narrow-phase.md#a-sphere-against-a-polyhedron.
 PointClosest FindClosestFeatureToPoint(const TrackedPolyhedron& polyhedron, const Pose& X_WA,
-                                       const Vec3& p_W, std::optional<FeatureId> start = std::nullopt,
+                                       const Vec3& p_W,
+                                       std::optional<FeatureId> start = std::nullopt,
                                        const ClosestFeaturesOptions& options = {});
 
 }  // namespace sparsedyn

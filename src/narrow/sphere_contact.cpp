@@ -38,7 +38,9 @@ struct PointZoneEvent {
   enum class Kind : std::uint8_t { kContact, kExit, kNone, kStalled };
   Kind kind = Kind::kNone;
   double dt = 0.0;
-  FeatureId next;  // kExit, kStalled: the feature across the plane left
+  FeatureId next;       // kExit, kStalled: the feature across the plane left
+  bool within = false;  // kContact: the gap polynomial is already negative at dt = 0, so
+                        // dt is where the gap leaves the tolerance band again
 };
 
 // The gap polynomial of the centre q(dt) against feature f while f stays closest: <= 0
@@ -98,10 +100,11 @@ PointZoneEvent NextPointZoneEvent(const ConvexPolyhedron& poly, FeatureId f,
       event.next = vp.neighbor;
     }
   }
-  if (const std::optional<double> contact =
-          EarliestRoot(GapPolynomial(poly, f, q, reach), 0.0, exit)) {
+  const Polynomial gap = GapPolynomial(poly, f, q, reach);
+  if (const std::optional<double> contact = EarliestRoot(gap, 0.0, exit)) {
     event.kind = PointZoneEvent::Kind::kContact;
     event.dt = *contact;
+    event.within = gap(0.0) < 0.0;
   } else if (exit < horizon) {
     event.kind = PointZoneEvent::Kind::kExit;
     event.dt = exit;
@@ -237,6 +240,22 @@ SphereContactPrediction PredictSphereContact(const TrackedPolyhedron& polyhedron
       if (stalled && retried_at != t) {
         retried_at = t;
         start = event.next;
+        continue;
+      }
+      // The polynomial has the gap within the tolerance already while the walk, a hair
+      // above it (round-off), stepped past its first root: the gap dips and comes back at dt.
+      // Where the dip is deepest, about halfway, the walk must agree if the dip is more than
+      // round-off: the first time within is then bisected from t. Otherwise the pass only
+      // grazed the tolerance and goes on past the dip.
+      if (event.kind == PointZoneEvent::Kind::kContact && event.within && event.dt > 0.0) {
+        const double middle = t + 0.5 * std::min(event.dt, horizon);
+        const Seen deepest = look(middle, seen_feature);
+        if (deepest.gap <= tol) {
+          const double first = narrow::BisectFirstWithin(gap, t, middle, tol);
+          return finish(Kind::kContact, first, look(first, seen_feature), out);
+        }
+        t = std::min(t + event.dt, t_end);
+        start = deepest.closest.feature;
         continue;
       }
       if (!stalled) {

@@ -40,7 +40,9 @@ inline std::optional<long double> SampledCrossing(const Mover& m, const Aabb& bo
                                                   bool inside, long double min_step,
                                                   long double from = 0.0L) {
   const long double L = std::max(MarginLipschitz(m, T), 1e-300L);
-  auto crossed = [&](long double dt) { return inside ? Margin(m, box, dt) < 0 : Margin(m, box, dt) >= 0; };
+  auto crossed = [&](long double dt) {
+    return inside ? Margin(m, box, dt) < 0 : Margin(m, box, dt) >= 0;
+  };
   long double t = from;
   if (crossed(t)) return t;
   while (t < T) {
@@ -85,8 +87,8 @@ inline std::optional<long double> LinearEntry(const Mover& m, const Aabb& box,
   return lo;
 }
 
-/// Random movers and boxes: half sizes log-uniform over 1e-2..1e2 (or less), positions within 30 m, speeds up
-/// to 3 m/s, accelerations up to 2 m/s^2 and radius growth (envelopes) on demand.
+/// Random movers and boxes: half sizes log-uniform over 1e-2..1e2 (or less), positions within 30 m,
+/// speeds up to 3 m/s, accelerations up to 2 m/s^2 and radius growth (envelopes) on demand.
 class BoxCases {
  public:
   explicit BoxCases(std::uint64_t seed) : rng_(seed) {}

@@ -3,6 +3,8 @@
 // (straight and parabolic, growing radii, finite and open limits, statics skipped) equal to
 // the minimum over all statics, never later than dense sampling; exits; pruning measured by
 // the nodes visited; inserts, removals and overlap queries against a plain map.
+#include "broadphase/static_tree.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -10,7 +12,6 @@
 #include <map>
 
 #include "box_oracle.hpp"
-#include "broadphase/static_tree.hpp"
 #include "sparsedyn/geometry/generators.hpp"
 
 namespace sparsedyn {
@@ -63,7 +64,8 @@ TEST(StaticTree, FirstEntryIsTheBruteForceMinimum) {
     const double limits[] = {1.0, 10.0, kInfinity};
     const double limit = limits[trial % 3];
     std::vector<bool> skipped(boxes.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i) skipped[i] = (i * 7919 + static_cast<std::size_t>(trial)) % 10 == 0;
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+      skipped[i] = (i * 7919 + static_cast<std::size_t>(trial)) % 10 == 0;
     SCOPED_TRACE(trial);
     const StaticTree::Entry expected = BruteForce(boxes, present, m, limit, skipped);
     const StaticTree::Entry got =
@@ -127,7 +129,8 @@ TEST(StaticTree, ExitIsTheBoxCrossingsAndNeverEarly) {
     if (out) {
       ++checked;
       // The sampled exit is the end of its bisection interval, 1e-16 wide.
-      EXPECT_GE(exit, *out - 2e-16L * std::max(1.0L, *out)) << std::setprecision(20) << trial << " " << *out;
+      EXPECT_GE(exit, *out - 2e-16L * std::max(1.0L, *out))
+          << std::setprecision(20) << trial << " " << *out;
     }
   }
   EXPECT_GE(checked, 1000);
@@ -147,16 +150,17 @@ TEST(StaticTree, QueriesVisitFewNodes) {
   for (int trial = 0; trial < queries; ++trial) {
     const Mover m = cases.Next(trial % 2 == 1, 300.0);
     StaticTree::Work work;
-    tree.FirstEntry(m, trial % 2 ? 5.0 : kInfinity, [](std::uint32_t) { return false; }, &work);
+    tree.FirstEntry(
+        m, trial % 2 ? 5.0 : kInfinity, [](std::uint32_t) { return false; }, &work);
     nodes += work.nodes;
     statics += work.statics;
   }
   const double per_query = static_cast<double>(nodes + statics) / queries;
-  std::printf("[static tree] N = %d, depth %d: %.1f nodes and %.1f statics tested per query "
-              "(%.2f%% of a linear scan), %zu bytes (%.0f per static)\n",
-              n, tree.depth(), static_cast<double>(nodes) / queries,
-              static_cast<double>(statics) / queries, 100.0 * per_query / n, tree.MemoryBytes(),
-              static_cast<double>(tree.MemoryBytes()) / n);
+  std::printf(
+      "[static tree] N = %d, depth %d: %.1f nodes and %.1f statics tested per query "
+      "(%.2f%% of a linear scan), %zu bytes (%.0f per static)\n",
+      n, tree.depth(), static_cast<double>(nodes) / queries, static_cast<double>(statics) / queries,
+      100.0 * per_query / n, tree.MemoryBytes(), static_cast<double>(tree.MemoryBytes()) / n);
   EXPECT_LT(per_query, 0.02 * n);
   EXPECT_LE(tree.depth(), 40);
   EXPECT_LT(tree.MemoryBytes(), 400u * n);
@@ -206,7 +210,8 @@ TEST(StaticTree, BoxOfPolyhedronHoldsEveryVertex) {
       EXPECT_GE(static_cast<long double>(box.hi[k]), p[k]);
     }
   }
-  EXPECT_LT((box.hi - box.lo).maxCoeff(), 2.0 * poly.bounding_radius() + 2 * poly.centroid().norm() + 1e-9);
+  EXPECT_LT((box.hi - box.lo).maxCoeff(),
+            2.0 * poly.bounding_radius() + 2 * poly.centroid().norm() + 1e-9);
 }
 
 }  // namespace

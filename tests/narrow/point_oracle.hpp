@@ -93,8 +93,8 @@ class PointSampler {
       }
       case 1: {
         const Edge& e = poly.edge(pick(poly.edge_count()));
-        normal = (poly.face(e.faces[0]).plane.normal + poly.face(e.faces[1]).plane.normal)
-                     .normalized();
+        normal =
+            (poly.face(e.faces[0]).plane.normal + poly.face(e.faces[1]).plane.normal).normalized();
         const double s = rng_() % 4 == 0 ? 0.5 : Uniform();
         return poly.vertex(e.vertices[0]) +
                s * (poly.vertex(e.vertices[1]) - poly.vertex(e.vertices[0]));

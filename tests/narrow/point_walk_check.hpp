@@ -35,7 +35,8 @@ struct PointWalkFigures {
   void Print(const char* what) const {
     std::printf(
         "[point walk] %s: %d hulls, %d points (%.1f%% inside), %d walks, max error %.3g x "
-        "(diameter + distance), cold steps mean %.2f max %d, warm (every feature) steps mean %.2f max %d, "
+        "(diameter + distance), cold steps mean %.2f max %d, warm (every feature) steps mean %.2f "
+        "max %d, "
         "brute-force endings cold %d warm %d\n",
         what, hulls, points, 100.0 * inside / std::max(points, 1), walks, max_relative_error,
         static_cast<double>(cold_steps) / std::max(points, 1), max_cold_steps,
@@ -64,8 +65,8 @@ inline Shape PointWalkHull(int i, std::mt19937_64& rng, bool& grid_points) {
       return MakeShape("scaled", RandomConvexPolyhedron(8 + static_cast<int>(rng() % 30), seed)
                                      ->Scaled(rng() % 2 ? 1e-3 : 1e3));
     default:
-      return MakeShape("random hull", *RandomConvexPolyhedron(4 + static_cast<int>(rng() % 61),
-                                                              seed));
+      return MakeShape("random hull",
+                       *RandomConvexPolyhedron(4 + static_cast<int>(rng() % 61), seed));
   }
 }
 
@@ -90,9 +91,9 @@ inline PointWalkFigures RunPointWalkCheck(std::uint64_t seed, int hull_count, in
           q_B[axis] = 0.5 * static_cast<double>(static_cast<int>(sampler.rng()() % 13) - 6);
       }
       const Eigen::Vector3d p_W = X_WA.ToWorld(q_B);
-      SCOPED_TRACE(::testing::Message() << std::setprecision(17) << "seed " << seed << " hull "
-                                        << i << " (" << shape.name << ") point " << k
-                                        << " p_W = (" << p_W.transpose() << ")");
+      SCOPED_TRACE(::testing::Message()
+                   << std::setprecision(17) << "seed " << seed << " hull " << i << " ("
+                   << shape.name << ") point " << k << " p_W = (" << p_W.transpose() << ")");
       const double reference = static_cast<double>(oracle.SignedDistance(X_WA, p_W));
       const double scale = diameter + std::abs(reference);
       const double bound = kPointErrorBound * scale;

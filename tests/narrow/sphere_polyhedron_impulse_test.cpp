@@ -44,7 +44,8 @@ Reflection ClosedForm(const Vec3& v, const Vec3& w, const Vec3& n, double m, dou
   const Vec3 u_t = u - u.dot(n) * n;
   const double j_n = -(1.0 + e) * m * v.dot(n);
   Vec3 j_t = -u_t / (1.0 / m + l * l / inertia);
-  if (j_t.norm() > mu * j_n) j_t = u_t.norm() > 0.0 ? Vec3(-mu * j_n * u_t.normalized()) : Vec3::Zero();
+  if (j_t.norm() > mu * j_n)
+    j_t = u_t.norm() > 0.0 ? Vec3(-mu * j_n * u_t.normalized()) : Vec3::Zero();
   const Vec3 j = j_n * n + j_t;
   return {v + j / m, w + (-l * n).cross(j) / inertia};
 }
@@ -77,7 +78,8 @@ void HitAndReflect(const Vec3& P_B, const Vec3& n_B, const char* what) {
   EXPECT_LT((contact.normal - n).norm(), 1e-8);
   EXPECT_LE(contact.distance, kTolerance);
   const Vec3 c = centre.PositionAt(p.time);
-  EXPECT_LT((contact.points[0] - (c - (r + 0.5 * contact.distance) * contact.normal)).norm(), 1e-14);
+  EXPECT_LT((contact.points[0] - (c - (r + 0.5 * contact.distance) * contact.normal)).norm(),
+            1e-14);
   const double l = (c - contact.points[0]).norm();
 
   for (const auto& [e, mu] : {std::pair{1.0, 0.0}, {0.6, 0.0}, {0.6, 0.05}, {0.6, 2.0}}) {
@@ -139,8 +141,10 @@ TEST(SphereImpulse, FreePolyhedronAndSphereConserveOrLoseEnergy) {
     RigidBodyState b = SolidSphereState(centre.PositionAt(p.time), centre.VelocityAt(p.time),
                                         gen.RandomUnit(), m_b, r);
     auto energy = [&] {
-      return 0.5 * m_a * a.velocity.squaredNorm() + 0.5 * a.angular_velocity.dot(I_a * a.angular_velocity) +
-             0.5 * m_b * b.velocity.squaredNorm() + 0.5 * b.angular_velocity.dot(I_b * b.angular_velocity);
+      return 0.5 * m_a * a.velocity.squaredNorm() +
+             0.5 * a.angular_velocity.dot(I_a * a.angular_velocity) +
+             0.5 * m_b * b.velocity.squaredNorm() +
+             0.5 * b.angular_velocity.dot(I_b * b.angular_velocity);
     };
     auto momentum = [&] { return Vec3(m_a * a.velocity + m_b * b.velocity); };
     auto angular = [&] {

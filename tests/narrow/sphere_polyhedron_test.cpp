@@ -213,3 +213,49 @@ TEST(SphereContact, CheckpointsResumeToTheSameAnswer) {
 
 }  // namespace
 }  // namespace sparsedyn
+
+namespace sparsedyn {
+namespace {
+
+// Two cases of the slow suite (seeds 20261233 and 20261235) where the first root of the gap
+// left the walk's gap 5e-16 above the tolerance, the step onto the tolerance mistook the
+// walk's round-off for a rising gap, and the prediction went on from inside the band to its
+// far root: a dip 1e-6 deep was missed. The gap's dip is now probed halfway.
+TEST(SphereContact, ADipThatTheWalkSeesOnlyPastTheFirstRootIsFound) {
+  struct Case {
+    std::uint64_t seed;
+    int trial;
+    Still still;
+    double tolerance;
+  };
+  for (const Case& k :
+       {Case{20261233, 966, Still::kSphere, 1e-4}, Case{20261235, 309, Still::kNeither, 1e-8}}) {
+    testing::MotionCaseGenerator generator(k.seed);
+    std::optional<testing::SphereCase> c;
+    for (int trial = 0; trial <= k.trial; ++trial) {
+      const double fraction = 0.1 + 0.9 * generator.Uniform();
+      c = testing::SphereFromPair(generator.Pair(0.0, true), fraction, k.still);
+    }
+    testing::ToiFigures f;
+    f.tolerance = k.tolerance;
+    ContactPredictionOptions options;
+    options.tolerance = k.tolerance;
+    int iterations = 0, checkpoints = 0;
+    const SphereContactPrediction p =
+        testing::PredictSphereResuming(*c, options, iterations, checkpoints);
+    ASSERT_EQ(p.kind, Kind::kContact) << c->Describe();
+    const testing::PointOracle oracle(*c->motion.a->polyhedron);
+    testing::CheckAgainstOracle(
+        c->motion, p.kind, p.time, p.gap, iterations, /*exact=*/true, k.tolerance,
+        [&](double t) {
+          return static_cast<double>(oracle.SignedDistance(c->motion.path_a.PoseAt(t),
+                                                           c->motion.path_b.centre.PositionAt(t))) -
+                 c->radius;
+        },
+        f);
+    EXPECT_EQ(f.Errors(/*exact=*/true), 0);
+  }
+}
+
+}  // namespace
+}  // namespace sparsedyn
