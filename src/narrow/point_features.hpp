@@ -39,11 +39,12 @@ struct PointClosest {
 /// from the App. J.1.2 direction table (or vertex 0 when options.use_direction_table is false).
 /// Every step either strictly lowers the distance from the point to the current feature or
 /// keeps it (to round-off) and lowers the feature's dimension, so between two escapes no
-/// feature repeats; an escape (the point over a face but behind its plane) jumps to the face
-/// whose plane the point is farthest in front of, or reports the point inside when there is
-/// none; a second escape to the same face, a lower step that round-off makes look longer than
-/// the allowance, or options.max_steps steps, ends in a search of every face. So the walk always
-/// terminates, and the answer does not depend on the start. Method and measured figures:
+/// feature repeats; an escape (the point over a face but behind its plane, by more than
+/// round-off: within it the point is on the surface) jumps to the face whose plane the point
+/// is farthest in front of, or reports the point inside when there is none; a second escape to the
+/// same face, a lower step that round-off makes look longer than the allowance, or
+/// options.max_steps steps, ends in a search of every face. So the walk always terminates, and the
+/// answer does not depend on the start. Method and measured figures:
 /// docs/narrow-phase.md#a-sphere-against-a-polyhedron.
 PointClosest FindClosestFeatureToPoint(const TrackedPolyhedron& polyhedron, const Pose& X_WA,
                                        const Vec3& p_W,
