@@ -120,30 +120,60 @@ TEST(QuadraticDrag, HorizontalWithoutGravityMatchesTheBernoulliClosedForm) {
 // Falling along g from v0 >= 0 (down) with both drags: w' = gz - c1 w - c2 w^2 = -c2 (w - w+)
 // (w - w-), so (w - w+) / (w - w-) = C e^(-lambda t) with lambda = sqrt(c1^2 + 4 c2 gz),
 // w = (w+ - w- C E) / (1 - C E), and the distance w+ t + ln((1 - C E) / (1 - C)) / c2.
+// Returns {z, w} with z and w measured up (both negative).
+std::array<long double, 2> RiccatiFall(double c1, double c2, double w0, long double t) {
+  const long double gz = 9.81L;
+  const long double root = std::sqrt(static_cast<long double>(c1) * c1 + 4 * c2 * gz);
+  const long double w_plus = (root - c1) / (2 * c2), w_minus = (-root - c1) / (2 * c2);
+  const long double big_c = (w0 - w_plus) / (w0 - w_minus);
+  const long double e = std::exp(-root * t);
+  const long double w = (w_plus - w_minus * big_c * e) / (1 - big_c * e);
+  return {-(w_plus * t + std::log((1 - big_c * e) / (1 - big_c)) / c2), -w};
+}
+
 TEST(QuadraticDrag, FallingWithBothDragsMatchesTheRiccatiClosedForm) {
   double worst = 0.0;
   for (const double c1 : {0.1, 2.0, 30.0}) {
     for (const double c2 : {0.01, 1.0, 80.0}) {
       for (const double w0 : {0.0, 3.0, 40.0}) {
-        const long double gz = 9.81L;
-        const long double root = std::sqrt(static_cast<long double>(c1) * c1 + 4 * c2 * gz);
-        const long double w_plus = (root - c1) / (2 * c2), w_minus = (-root - c1) / (2 * c2);
-        const long double big_c = (w0 - w_plus) / (w0 - w_minus);
+        const double root = std::sqrt(c1 * c1 + 4 * c2 * 9.81);
         const DragMotion motion(0.0, Vec3::Zero(), Vec3(0, 0, -w0), Vec3(0, 0, -9.81),
                                 Drag{.linear = c1, .quadratic = c2});
+        // The terminal speed, 2 gz / (c1 + sqrt(c1^2 + 4 c2 gz)), in long double.
+        const long double w_plus =
+            2 * 9.81L / (c1 + std::sqrt(static_cast<long double>(c1) * c1 + 4 * c2 * 9.81L));
         EXPECT_NEAR(motion.TerminalVelocity().z(), -static_cast<double>(w_plus),
                     1e-15 * static_cast<double>(w_plus));
-        for (long double t = 0.0L; t <= 30.0L / root; t += 0.17L / root) {
-          const long double e = std::exp(-root * t);
-          const long double w = (w_plus - w_minus * big_c * e) / (1 - big_c * e);
-          const long double z = -(w_plus * t + std::log((1 - big_c * e) / (1 - big_c)) / c2);
-          worst =
-              std::max(worst, CheckAgainst(motion, static_cast<double>(t), {0, 0, z}, {0, 0, -w}));
+        for (double t = 0.0; t <= 30.0 / root; t += 0.17 / root) {
+          const auto zw = RiccatiFall(c1, c2, w0, t);
+          worst = std::max(worst, CheckAgainst(motion, t, {0, 0, zw[0]}, {0, 0, zw[1]}));
         }
       }
     }
   }
   std::printf("both drags along g: largest error / bound %.3g\n", worst);
+}
+
+// Long after the start the stepper is on its settled step (at terminal velocity): still on
+// the closed form, within bounds that stop growing but for round-off.
+TEST(QuadraticDrag, SettledStepFollowsTheRiccatiClosedForm) {
+  double worst = 0.0;
+  for (const double c1 : {0.0, 0.5}) {
+    for (const double c2 : {0.05, 3.0}) {
+      const DragModel model{Vec3(0, 0, -9.81), c1, c2};
+      const DragFlow flow = DragFlow::Make(model, Vec3(0, 0, -1.0));
+      DragStepper stepper(flow, Vec3::Zero(), Vec3(0, 0, -1.0));
+      const DragMotion motion(0.0, Vec3::Zero(), Vec3(0, 0, -1.0), model.g, Drag{c1, c2});
+      const double root = std::sqrt(c1 * c1 + 4 * c2 * 9.81);
+      for (double t = 60.0 / root; t < 1e4; t *= 1.7) {
+        stepper.AdvanceTo(t);
+        const auto zw = RiccatiFall(c1, c2, 1.0, t);
+        worst = std::max(worst, CheckAgainst(motion, t, {0, 0, zw[0]}, {0, 0, zw[1]}));
+      }
+      EXPECT_FALSE(std::isfinite(stepper.End()));  // settled
+    }
+  }
+  std::printf("settled: largest error / bound %.3g\n", worst);
 }
 
 // The 3D case has no closed form: a long-double RK4 at two step sizes (their difference, times
