@@ -175,22 +175,35 @@ DragMotion::Horizon DragMotion::FindHorizon(double t, double max_error, double m
     const Envelope still{RoundedUp(state.position_error + eval_error(0.0)), 0.0, 0.0};
     return Horizon{kInfinity, TaylorSegment{path, still, kInfinity}};
   }
-  // An upper bracket from the model alone (E_max >= 0 only adds), so that the integrator
-  // walks no further than needed.
+  // An upper bracket from the model alone (E_max >= 0 only adds): the shortest horizon the
+  // model already rejects, to 1e-6, so that the integrator walks no further than needed.
+  auto model_fits = [&](double horizon) { return model.Reach(horizon, 0.0) <= max_error; };
   double hi = std::min(1.0, max_horizon);
-  while (hi < max_horizon && model.Reach(hi, 0.0) <= max_error) {
-    hi = std::min(2.0 * hi, max_horizon);
+  double lo = 0.0;
+  if (model_fits(hi)) {
+    while (hi < max_horizon && model_fits(hi)) {
+      lo = hi;
+      hi = std::min(2.0 * hi, max_horizon);
+    }
+  } else {
+    while (!model_fits(0.5 * hi) && hi > 1e-300) hi *= 0.5;
+    lo = 0.5 * hi;
   }
   if (!std::isfinite(hi)) {
     // The model never leaves its path: a = 0 and v, a known exactly, so v = 0 too (a known
-    // non-zero velocity has a velocity bound > 0, which grows the envelope). At rest, every
-    // reported position is the same and so is its bound: no check is ever needed.
+    // non-zero velocity has a velocity bound > 0, which grows the envelope).
     SPARSEDYN_ASSERT(state.velocity == Vec3::Zero(), "drag horizon: unbounded while moving");
     return segment(kInfinity, eval_error(0.0));
   }
+  if (!model_fits(hi)) {
+    while (hi - lo > 1e-6 * hi) {
+      const double mid = 0.5 * (lo + hi);
+      (model_fits(mid) ? lo : hi) = mid;
+    }
+  }
   if (fits(hi)) return segment(hi, eval_error(hi));  // hi == max_horizon
   // Bisection: the envelope's reach grows with the horizon, so [lo fits, hi does not].
-  double lo = 0.0;
+  lo = 0.0;
   while (hi - lo > 1e-4 * hi) {
     const double mid = 0.5 * (lo + hi);
     (fits(mid) ? lo : hi) = mid;
