@@ -47,4 +47,16 @@ struct ThrustChange {
   Vec3 thrust = Vec3::Zero();  ///< m/s^2, the body's own acceleration from `time` on
 };
 
+/// Aerodynamic drag on a body's centre (App. H.2, "wind resistance"): the acceleration
+/// a = g - linear v - quadratic |v| v, with g the body's constant acceleration (gravity plus its
+/// thrust) and v its velocity in the world frame (still air). `linear` (c1, 1/s) is Stokes drag,
+/// `quadratic` (c2, 1/m) is Newton drag (c2 = rho Cd A / (2 m)); both must be finite and >= 0.
+/// The true motion is src/motion/drag_motion.hpp's DragMotion (docs/dynamics.md, "Drag").
+struct Drag {
+  double linear = 0.0;     ///< c1, 1/s
+  double quadratic = 0.0;  ///< c2, 1/m
+  /// No drag at all: the body's path is the constant-acceleration polynomial of App. F.3.
+  bool IsZero() const { return linear == 0.0 && quadratic == 0.0; }
+};
+
 }  // namespace sparsedyn
