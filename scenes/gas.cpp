@@ -69,7 +69,7 @@ bool PlaceAtRandom(const GasOptions& o, double side, Random& random, std::vector
   const std::uint64_t max_attempts = static_cast<std::uint64_t>(kAttemptsPerSphere) * o.n;
   while (out.size() < o.n) {
     if (++attempts > max_attempts) return false;
-    Vec3 p(random.Uniform(lo, hi), random.Uniform(lo, hi), random.Uniform(lo, hi));
+    Vec3 p = DrawVector([&] { return random.Uniform(lo, hi); });
     if (!free_at(p)) continue;
     const int cx = static_cast<int>(p[0] / cell), cy = static_cast<int>(p[1] / cell),
               cz = static_cast<int>(p[2] / cell);
@@ -140,7 +140,7 @@ Result<std::vector<BodyDef>> MakeGasBodies(const GasOptions& options) {
   const double sigma_v = std::sqrt(options.kT / options.mass);
   Vec3 mean = Vec3::Zero();
   for (Vec3& v : velocities) {
-    v = Vec3(random.Normal(), random.Normal(), random.Normal()) * sigma_v;
+    v = DrawVector([&] { return random.Normal(); }) * sigma_v;
     mean += v;
   }
   mean /= options.n;
@@ -169,6 +169,7 @@ Result<World> MakeGas(const GasOptions& options, WorldSettings settings) {
   const double side = GasBoxSide(options);
   settings.container = options.periodic ? Container::PeriodicBox(Vec3::Zero(), Vec3::Constant(side))
                                         : Container::WalledBox(Vec3::Zero(), Vec3::Constant(side));
+  if (Status valid = ValidateSettings(settings); !valid) return valid.error();
   World world(settings);
   for (const BodyDef& def : *bodies) {
     Result<BodyId> id = world.AddBody(def);

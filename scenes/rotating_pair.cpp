@@ -75,8 +75,7 @@ Result<RotatingPair> MakeRotatingPair(const RotatingPairOptions& options) {
   const Eigen::Vector3d start_offset =
       orbit_axis.unitOrthogonal() * options.orbit_radius;  // perpendicular to the orbit axis
   const Eigen::Quaterniond R_WA0 =
-      Eigen::Quaterniond(random.Normal(), random.Normal(), random.Normal(), random.Normal())
-          .normalized();
+      DrawQuaternion([&] { return random.Normal(); }).normalized();
 
   // Angles from the step index (not accumulated), so that the loop closes exactly.
   const double step_radians = options.degrees_per_step * M_PI / 180.0;

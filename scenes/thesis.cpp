@@ -45,7 +45,7 @@ Result<SceneShape> PoolShape(int faces, std::uint64_t shape_seed) {
 // Uniform on SO(3): a normalised 4-d Gaussian vector is uniform on the 3-sphere.
 Eigen::Quaterniond RandomOrientation(Random& random) {
   for (;;) {
-    Eigen::Quaterniond q(random.Normal(), random.Normal(), random.Normal(), random.Normal());
+    Eigen::Quaterniond q = DrawQuaternion([&] { return random.Normal(); });
     if (q.norm() < 1e-3) continue;
     for (int k = 0; k < kNormaliseAttempts && q.norm() != 1.0; ++k) q.normalize();
     if (q.norm() == 1.0) return q;
@@ -55,7 +55,7 @@ Eigen::Quaterniond RandomOrientation(Random& random) {
 // A uniformly random unit vector (normalised 3-d Gaussian).
 Vec3 RandomDirection(Random& random) {
   for (;;) {
-    const Vec3 d(random.Normal(), random.Normal(), random.Normal());
+    const Vec3 d = DrawVector([&] { return random.Normal(); });
     if (d.norm() > 1e-3) return d.normalized();
   }
 }
@@ -66,7 +66,7 @@ void AssignVelocities(const ThesisOptions& o, Random& random, std::vector<SceneB
   Vec3 momentum = Vec3::Zero();
   double total_mass = 0;
   for (SceneBody& b : bodies) {
-    b.velocity = Vec3(random.Normal(), random.Normal(), random.Normal());
+    b.velocity = DrawVector([&] { return random.Normal(); });
     momentum += b.mass * b.velocity;
     total_mass += b.mass;
   }
@@ -136,7 +136,10 @@ Result<SceneDescription> MakeThesisScene(const ThesisOptions& options) {
     body.shape = scene_index[k];
     body.position = (*placed)[i].position;
     body.orientation = RandomOrientation(random);
-    body.angular_velocity = RandomDirection(random) * random.Uniform(0, options.max_spin);
+    // The speed is drawn before the direction, in sequence: as the two operands of * their order
+    // was the compiler's (see DrawVector); this is the order GCC on x86-64 took.
+    const double spin = random.Uniform(0, options.max_spin);
+    body.angular_velocity = RandomDirection(random) * spin;
     body.density = options.density;
     body.mass = options.density * scene.shapes[body.shape].Volume();
     body.restitution = 1.0;

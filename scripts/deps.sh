@@ -7,6 +7,8 @@
 # .ci/run.
 #   scripts/deps.sh            build + test dependencies
 #   scripts/deps.sh --peers    also the peer engines for bench/peers (Bullet, FCL, libccd)
+#   scripts/deps.sh --aarch64  also the cross build (scripts/aarch64.sh): the cross compiler,
+#                              qemu-user and the arm64 multiarch Qhull and GoogleTest
 set -euo pipefail
 
 packages=(build-essential cmake pkg-config libeigen3-dev libqhull-dev libcli11-dev
@@ -15,8 +17,15 @@ packages=(build-essential cmake pkg-config libeigen3-dev libqhull-dev libcli11-d
           libcpp-httplib-dev
           python3-dev python3-venv python3-pybind11 python3-numpy python3-pytest
           python3-matplotlib doxygen python3)
+# clang for the sanitizer build and libFuzzer (the asan preset), valgrind for CI's memcheck.
+packages+=(clang llvm valgrind)
 if [[ "${1:-}" == "--peers" ]]; then
   packages+=(gnuplot-nox)
+fi
+aarch64=0
+if [[ "${1:-}" == "--aarch64" ]]; then
+  aarch64=1
+  packages+=(g++-aarch64-linux-gnu qemu-user libqhull-dev:arm64 libgtest-dev:arm64)
 fi
 
 missing=()
@@ -40,6 +49,10 @@ if ((${#missing[@]} > 0)); then
     sudo_cmd=(sudo)
   fi
   echo "scripts/deps.sh: installing ${missing[*]}" >&2
+  # The arm64 libraries come from the same archive as a second (multiarch) architecture.
+  if ((aarch64)) && ! dpkg --print-foreign-architectures | grep -qx arm64; then
+    "${sudo_cmd[@]}" dpkg --add-architecture arm64
+  fi
   "${sudo_cmd[@]}" apt-get update -qq
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
     "${missing[@]}" >&2

@@ -117,6 +117,11 @@ int Run(const RunOptions& options) {
   World& world = setup->world;
   SceneDescription& scene = setup->scene;
   const double until = options.until.value_or(scene.duration);
+  if (const Status clock = CheckClockResolution(world, until); !clock) {
+    std::cerr << "sparsedyn run: " << (options.until ? "--until" : "duration") << ": "
+              << clock.error().message << "\n";
+    return 2;
+  }
 
   // --write-scene writes the fully expanded scene (every body) and runs nothing.
   if (!options.write_scene.empty()) {
@@ -151,10 +156,10 @@ int Run(const RunOptions& options) {
   const Status status = AdvanceWithProgress(world, until);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!status) {
-    std::cerr << "sparsedyn run: " << status.error().message << "\n";
-    return 1;
-  }
+  // A failed run keeps what it did: the recording ends at the last processed event (where the
+  // clock stopped), the summary is printed with the error, and the exit status says it failed.
+  if (!status) std::cerr << "sparsedyn run: " << status.error().message << "\n";
+  const int exit_status = status ? 0 : 1;
   if (recorder) {
     if (const Status finished = recorder->Finish(world.Time()); !finished) {
       std::cerr << "sparsedyn run: recording: " << finished.error().message << "\n";
@@ -167,11 +172,16 @@ int Run(const RunOptions& options) {
     out["recording"] = recording_path;
     out["recording_bytes"] = recorder->BytesWritten();
   }
+  if (!status) out["error"] = status.error().message;
   if (options.json) {
     std::cout << out.dump(2) << "\n";
-    return 0;
+    return exit_status;
   }
   PrintSummary(out);
+  if (!status) {
+    std::printf("  stopped by an error at t = %.17g: %s\n", world.Time(),
+                status.error().message.c_str());
+  }
   if (recorder) {
     const double collisions = std::max(1.0, out["collisions"].get<double>());
     std::printf("  recording %s: %llu bytes (%.0f per collision)\n", recording_path.c_str(),
@@ -179,7 +189,7 @@ int Run(const RunOptions& options) {
                 static_cast<double>(recorder->BytesWritten()) / collisions);
     std::printf("\nView it with:\n  %s view %s\n", options.program.c_str(), recording_path.c_str());
   }
-  return 0;
+  return exit_status;
 }
 
 }  // namespace

@@ -45,6 +45,27 @@ struct Statistics {
   double seconds_queue = 0;     ///< queue maintenance
 };
 
+/// Process-wide counts of the iterate-to-convergence loops that ran into their caps (all Worlds
+/// and free functions of the process together; docs/reliability.md lists every such loop). A
+/// cap keeps each result valid (conservative: a wider root bracket, an earlier prediction), only
+/// less tight, so a non-zero count is a numerical corner case to look at; the tests assert 0
+/// (the golden runs of tests/world/state_hash_test.cpp). The World's own caps are in Statistics:
+/// the closest-feature walk (walk_cap_hits), the detailed phase's work cap (detail_checkpoints)
+/// and the stall limit (an error from AdvanceTo).
+struct CapCounters {
+  std::uint64_t root_narrowing = 0;         // math: a root bracket still wide after 256 steps
+  std::uint64_t meeting_certification = 0;  // sparse: 90 doublings did not certify a meeting time
+  std::uint64_t impulse_rounds = 0;         // dynamics: 16 impulse rounds left a point approaching
+  std::uint64_t level_crossing = 0;         // narrow: 200 doublings did not reach the tolerance
+  std::uint64_t bisection = 0;              // narrow: a first-within bisection past 4096 steps
+  friend bool operator==(const CapCounters&, const CapCounters&) = default;
+};
+
+/// The counts so far (relaxed atomic reads).
+CapCounters CapHits();
+/// Sets every count back to 0 (tests).
+void ResetCapHits();
+
 /// The name of event kind `k` in Statistics::events_by_kind ("cell_crossing", ...).
 const char* EventKindName(int k);
 

@@ -85,6 +85,14 @@ struct WorldSettings {
   double start_time = 0.0;
 };
 
+/// Checks `settings` (issue #39 part 9): a walled or periodic container with finite bounds of
+/// magnitude <= 1e100 and hi > lo on every axis, known enumerators, finite gravity of magnitude
+/// <= 1e100, contact_tolerance in [0, 0.1], elastic_below_speed in [0, 1e100],
+/// grid_cells_per_body in (0, 1e6] and stall_event_limit > 0. The Error names the field
+/// ("settings.container.hi[2] = ..."). BuildWorld and the presets return it; the World
+/// constructor asserts it.
+Status ValidateSettings(const WorldSettings& settings);
+
 /// A body: a sphere of `radius`, or the convex polyhedron `shape`.
 struct BodyDef {
   double radius = 0.5;  ///< m; a sphere's radius (a polyhedron's is its bounding one)
@@ -174,11 +182,12 @@ class World {
   World& operator=(const World&) = delete;
 
   /// Adds a body at the current time. Refused, with nothing changed, when a value is NaN/Inf,
-  /// radius or mass <= 0, restitution outside [0, 1], friction < 0, the orientation is not a
-  /// unit quaternion, an envelope coefficient < 0, a thrust change is not later than the one
-  /// before or comes before the clock, the body lies outside the container, it overlaps
-  /// (polyhedra: touches) a body already present, or it would mix spheres and polyhedra in
-  /// one World.
+  /// radius or mass <= 0, a magnitude is absurd (beyond 1e100, a radius below 2^-40 of its
+  /// coordinates: src/world/hostile_values.hpp), restitution outside [0, 1], friction < 0, the
+  /// orientation is not a unit quaternion, an envelope coefficient < 0, a thrust change is not
+  /// later than the one before or comes before the clock, the body lies outside the container,
+  /// it overlaps (polyhedra: touches) a body already present, or it would mix spheres and
+  /// polyhedra in one World.
   Result<BodyId> AddBody(const BodyDef& def);
 
   // --- Changes between AdvanceTo calls, at Time(). Each is checked first: a refused change
@@ -257,5 +266,13 @@ class World {
   class Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// Refuses an end time `t` (a named Error) that is not finite or at which one step (ulp) of
+/// the clock exceeds 2^-20 of the shortest time a body of `world` may take to move by its own
+/// radius: past such a t consecutive events could not be told apart and AdvanceTo would stall.
+/// The speed bound is all the kinetic energy in the lightest body plus what accelerations add
+/// by t (in a walled box: a fall across its diagonal). O(N); `sparsedyn run` calls it before it
+/// runs (docs/reliability.md).
+Status CheckClockResolution(const World& world, double t);
 
 }  // namespace sparsedyn

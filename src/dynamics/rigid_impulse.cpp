@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "dynamics/rigid_collision.hpp"
+#include "math/cap_counters.hpp"
 
 namespace sparsedyn {
 namespace {
@@ -172,6 +173,8 @@ RigidImpulseResult ApplyRigidImpulse(RigidBodyState& a, RigidBodyState& b,
     if (contact.points.size() == 1) break;
     std::tie(p, un) = MostApproaching(a, b, contact.points, n);
   }
+  // Still approaching after the last round: the next event meets the pair again at once.
+  if (un < -threshold && result.rounds >= kMaxRounds) caps::Count(caps::impulse_rounds);
   if (point_weight > 0.0) result.point = weighted_point / point_weight;
   return result;
 }

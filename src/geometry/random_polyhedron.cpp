@@ -25,8 +25,12 @@ double Uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) *
 // and sqrt, which IEEE 754 rounds exactly, so the points are bit-identical everywhere.
 Eigen::Vector3d UniformOnSphere(std::mt19937_64& rng) {
   while (true) {
-    const Eigen::Vector3d p(2.0 * Uniform(rng) - 1.0, 2.0 * Uniform(rng) - 1.0,
-                            2.0 * Uniform(rng) - 1.0);
+    // Drawn z, y, x in sequence: as constructor arguments the order was the compiler's (GCC
+    // on x86-64 right to left, aarch64 and clang left to right; docs/reliability.md).
+    const double z = 2.0 * Uniform(rng) - 1.0;
+    const double y = 2.0 * Uniform(rng) - 1.0;
+    const double x = 2.0 * Uniform(rng) - 1.0;
+    const Eigen::Vector3d p(x, y, z);
     const double r2 = p.squaredNorm();
     // The lower bound avoids amplifying the quantisation of tiny vectors.
     if (r2 <= 1.0 && r2 > 1e-4) return p / std::sqrt(r2);

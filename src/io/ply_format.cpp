@@ -311,7 +311,7 @@ Result<MeshLayout> FindLayout(const PlyHeader& header, std::string_view name) {
       const PlyProperty& property = element.properties[p];
       if (element.name == "vertex" && !property.list_count_type) {
         for (std::size_t axis = 0; axis < 3; ++axis) {
-          if (property.name == std::string_view("xyz" + axis, 1)) layout.xyz[axis] = p;
+          if (property.name == std::string_view(&"xyz"[axis], 1)) layout.xyz[axis] = p;
         }
       }
       if (element.name == "face" && property.list_count_type &&

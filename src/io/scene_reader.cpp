@@ -47,7 +47,7 @@ class SceneParser {
     if (checker_.Object(
             root, "",
             {"name", "description", "seed", "packing", "duration", "gravity", "broadphase",
-             "grid_cells_per_body", "container", "tolerances", "bodies"})) {
+             "grid_cells_per_body", "stall_event_limit", "container", "tolerances", "bodies"})) {
       ParseTopLevel(root);
     }
     if (!checker_.ok()) return checker_.ToError();
@@ -79,6 +79,12 @@ class SceneParser {
               checker_.NumberIn(root["grid_cells_per_body"], "grid_cells_per_body", 0, 1e6, true)) {
         settings.grid_cells_per_body = *c;
       }
+    }
+    if (root.contains("stall_event_limit")) {
+      const auto limit =
+          checker_.Unsigned(root["stall_event_limit"], "stall_event_limit", UINT64_MAX);
+      if (limit && *limit == 0) checker_.Fail("stall_event_limit", "must be at least 1");
+      if (limit && *limit > 0) settings.stall_event_limit = *limit;
     }
     if (root.contains("container")) ParseContainer(root["container"]);
     if (root.contains("tolerances")) ParseTolerances(root["tolerances"]);

@@ -224,8 +224,11 @@ std::optional<SceneShape> BuildShape(const json& spec, const std::string& path,
   std::string where;
   if (spec.contains("mesh")) {
     where = Key(path, "mesh");
-    Result<PolygonMesh> mesh = ReadMesh(base_dir / spec["mesh"].get<std::string>());
+    const std::filesystem::path file = base_dir / spec["mesh"].get<std::string>();
+    Result<PolygonMesh> mesh = ReadMesh(file);  // its errors say "<file>:<line>: ..."
     built = mesh ? ConvexPolyhedron::FromMesh(*mesh) : Result<ConvexPolyhedron>(mesh.error());
+    // A mesh refused as a polyhedron (not convex, not closed...) names the file too.
+    if (mesh && !built) built = Error{file.string() + ": " + built.error().message};
   } else {
     where = Key(path, "generator");
     built = Generate(spec);

@@ -55,6 +55,9 @@ std::string FormatScene(const SceneDescription& scene) {
   top["gravity"] = VectorJson(settings.gravity);
   top["broadphase"] = settings.broadphase == Broadphase::kGrid ? "grid" : "allpairs";
   top["grid_cells_per_body"] = settings.grid_cells_per_body;
+  if (settings.stall_event_limit != WorldSettings{}.stall_event_limit) {
+    top["stall_event_limit"] = settings.stall_event_limit;  // written only when not the default
+  }
   top["tolerances"] = {{"contact", settings.contact_tolerance},
                        {"elastic_below_speed", settings.elastic_below_speed}};
 
@@ -99,6 +102,7 @@ BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index) {
 }
 
 Result<World> BuildWorld(const SceneDescription& scene) {
+  if (Status settings = ValidateSettings(scene.settings); !settings) return settings.error();
   World world(scene.settings);
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     Result<BodyId> id = world.AddBody(SceneBodyDef(scene, i));

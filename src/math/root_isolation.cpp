@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "math/cap_counters.hpp"
 #include "math/roots.hpp"
 #include "sparsedyn/assert.hpp"
 
@@ -41,6 +42,10 @@ constexpr Real kEnclosureMargin = 1 + 64 * kUnitRoundoff;
 // always suffice; the cap only guards against a bug turning into a hang. Exhausting it keeps the
 // bracket valid (its ends keep their certified classification), only wider.
 constexpr int kMaxNarrowSteps = 256;
+
+// Newton and secant candidates beyond this are dropped rather than rounded to double (half the
+// double range: rounding to double cannot overflow from below it).
+constexpr Real kNewtonRange = std::numeric_limits<double>::max() / 2;
 
 // The largest ulp probe past a converged Newton iterate (see Narrow).
 constexpr std::int64_t kMaxProbeUlps = std::int64_t{1} << 40;
@@ -178,18 +183,22 @@ void Narrow(const DerivativeTower& tower, int level, double& left, double& right
       bisect = width > window_width / 2;
       window_width = width;
     }
-    if (bisect || !(left < t && t < right)) t = Midpoint(ordered_left, ordered_right);
+    if (bisect || std::isnan(t) || !(left < t && t < right)) {
+      t = Midpoint(ordered_left, ordered_right);  // isnan first: NaN compared with < traps
+    }
 
     // Classify t and keep the invariant.
     const Sample s = tower.Evaluate(level, t);
     const bool went_left = is_left(s);
     (went_left ? left : right) = t;
 
-    // Next candidate: Newton while converging, then the ulp probe across the boundary.
-    const Real newton_move = -s.value / s.slope;
-    const double newton = static_cast<double>(t + newton_move);
+    // Next candidate: Newton while converging, then the ulp probe across the boundary. A zero
+    // slope or a step out of the double range gives no Newton candidate; both are tested before
+    // dividing and rounding, so no IEEE infinity is made (the tests trap them).
+    const Real newton_move = s.slope != 0 ? -s.value / s.slope : Real{0};
+    const bool newton_finite = s.slope != 0 && std::fabs(t + newton_move) <= kNewtonRange;
+    const double newton = newton_finite ? static_cast<double>(t + newton_move) : t;
     const std::int64_t ordered_t = Ordered(t);
-    const bool newton_finite = std::isfinite(newton);
     if (newton_finite &&
         Distance(std::min(ordered_t, Ordered(newton)), std::max(ordered_t, Ordered(newton))) > 2) {
       const bool converging = std::fabs(newton_move) <= move_before / 2;
@@ -202,6 +211,7 @@ void Narrow(const DerivativeTower& tower, int level, double& left, double& right
     move_before = last_move;
     last_move = newton_finite ? std::fabs(newton_move) : std::numeric_limits<Real>::infinity();
   }
+  caps::Count(caps::root_narrowing);  // the bracket stays valid, only wider
 }
 
 // As Narrow, for a boundary expected right next to one end (`from_left`: next to `left`), as
@@ -240,7 +250,11 @@ void AddInterval(RootIntervals& out, double lo, double hi) {
 double SecantGuess(double x, const Sample& sx, double y, const Sample& sy) {
   const Real denominator = sy.value - sx.value;
   if (denominator == 0) return std::numeric_limits<double>::quiet_NaN();
-  return static_cast<double>(x - sx.value * (static_cast<Real>(y) - x) / denominator);
+  const Real guess = x - sx.value * (static_cast<Real>(y) - x) / denominator;
+  if (std::isnan(guess) || std::fabs(guess) > kNewtonRange) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  return static_cast<double>(guess);
 }
 
 // Optional closed-form estimates of the roots of level 0, used as Newton's first guess.
@@ -358,6 +372,11 @@ double RootMagnitudeBound(const Polynomial& p) {
     best = std::max(best, e >= 0 ? (e + k - 1) / k : -((-e) / k));
   }
   if (best == INT_MIN) return 0.0;  // p = c_n t^n: every root is 0
+  // Past the double range the bound is +infinity, said so rather than made by an overflowing
+  // ldexp (which the tests' floating-point traps would stop).
+  if (best + 1 >= std::numeric_limits<double>::max_exponent) {
+    return std::numeric_limits<double>::infinity();
+  }
   // Fujiwara (1916): |z| <= 2 max_k |c_{n-k} / c_n|^(1/k). Never round a bound down to 0.
   return std::max(std::ldexp(1.0, best + 1), std::numeric_limits<double>::denorm_min());
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "sparsedyn/assert.hpp"
 
@@ -86,9 +87,14 @@ void DragStepper::PrepareStep() {
   // 0.4 min(tol / (c2 S^2), (tol / (c2 A^2))^(1/3)) keeps it below tol (2 (0.4) + 2 (0.4^3)).
   const double speed = RoundedUp(velocity_.norm() * (1.0 + 4.0 * kUnitRoundoff));
   const double tol_per_c2 = flow.tolerance / model.c2;
-  const double by_speed = speed > 0.0 ? tol_per_c2 / (speed * speed) : kInfinity;
-  const double by_accel =
-      accel_bound_ > 0.0 ? std::cbrt(tol_per_c2 / (accel_bound_ * accel_bound_)) : kInfinity;
+  // A square so small that the quotient would overflow (or the square underflow to 0) means
+  // no limit: tested first, so no division traps (the tests run with floating-point traps).
+  const auto limit = [tol_per_c2](double square) {
+    return square > tol_per_c2 / std::numeric_limits<double>::max() ? tol_per_c2 / square
+                                                                     : kInfinity;
+  };
+  const double by_speed = limit(speed * speed);
+  const double by_accel = std::cbrt(limit(accel_bound_ * accel_bound_));
   const double slow_length = 0.4 * std::min(by_speed, by_accel);
 
   const DragTaylorPlan plan = PlanDragTaylorStep(model, velocity_, accel_bound_, flow.tolerance);

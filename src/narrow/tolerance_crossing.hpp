@@ -9,6 +9,8 @@
 #include <limits>
 #include <optional>
 
+#include "math/cap_counters.hpp"
+
 namespace sparsedyn::narrow {
 
 /// The smallest time in (apart, within] (to adjacent doubles) with distance(t) <= level, where
@@ -16,11 +18,16 @@ namespace sparsedyn::narrow {
 /// between (a translating pair: convex distance).
 template <class Distance>
 double BisectFirstWithin(const Distance& distance, double apart, double within, double level) {
-  while (true) {
+  // Halving in value reaches adjacent doubles in at most ~2100 steps (exponent range plus
+  // mantissa); the cap only guards against a bug turning into a hang. `within` stays valid.
+  constexpr int kMaxBisections = 4096;
+  for (int step = 0; step < kMaxBisections; ++step) {
     const double mid = apart + 0.5 * (within - apart);
     if (mid <= apart || mid >= within) return within;
     (distance(mid) <= level ? within : apart) = mid;
   }
+  caps::Count(caps::bisection);
+  return within;
 }
 
 /// What StepIntoLevel found.
@@ -39,15 +46,17 @@ LevelCrossing StepIntoLevel(const Distance& distance, double t, double d_t, doub
   double lo = t, d_lo = d_t;
   double step = std::max(
       std::nextafter(std::abs(t), std::numeric_limits<double>::infinity()) - std::abs(t), 1e-18);
-  for (int k = 0; k < 200; ++k, step *= 2.0) {
+  constexpr int kMaxDoublings = 200;
+  for (int k = 0; k < kMaxDoublings; ++k, step *= 2.0) {
     const double hi = std::min(t + step, t_end);
-    if (hi <= lo) break;
+    if (hi <= lo) return {std::nullopt, lo};
     const double d_hi = distance(hi);
     if (d_hi <= level) return {BisectFirstWithin(distance, lo, hi, level), lo};
     if (d_hi > d_lo) return {std::nullopt, hi};
     lo = hi;
     d_lo = d_hi;
   }
+  caps::Count(caps::level_crossing);
   return {std::nullopt, lo};
 }
 

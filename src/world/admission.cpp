@@ -5,6 +5,7 @@
 
 #include "base/format.hpp"
 #include "world/body_checks.hpp"
+#include "world/hostile_values.hpp"
 
 namespace sparsedyn {
 
@@ -32,6 +33,7 @@ std::optional<Error> CheckSchedule(const std::vector<ThrustChange>& schedule, do
 Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t slot,
                                              bool started) const {
   if (std::optional<Error> error = CheckBodyValues(def, slot)) return *error;
+  if (std::optional<Error> error = CheckHostileValues(def, core_.settings, slot)) return *error;
   const std::string body = "body " + std::to_string(slot) + ": ";
   const bool polyhedron = def.shape != nullptr;
   const BodyStore& bodies = core_.bodies;

@@ -175,7 +175,9 @@ std::size_t World::Impl::MemoryBytes() const {
 
 // --- World: thin forwarding to Impl ---
 
-World::World(const WorldSettings& settings) : impl_(std::make_unique<Impl>(settings)) {}
+World::World(const WorldSettings& settings) : impl_(std::make_unique<Impl>(settings)) {
+  SPARSEDYN_ASSERT(ValidateSettings(settings), "World: invalid settings (see ValidateSettings)");
+}
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;

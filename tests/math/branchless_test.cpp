@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "scenes/random.hpp"
+#include "support/fp_traps.hpp"
 
 namespace sparsedyn {
 namespace {
@@ -35,6 +36,9 @@ std::vector<double> Values() {
 }
 
 TEST(Branchless, SelectMaxMinAreThePlainExpressionsBitForBit) {
+  // Floating-point traps paused (docs/reliability.md): NaN and
+  // infinite operands on purpose (ordered comparisons with NaN are invalid operations).
+  const sparsedyn::testing::FloatingPointTrapsPaused traps_paused;
   const std::vector<double> values = Values();
   for (const double a : values) {
     for (const double b : values) {
@@ -82,6 +86,9 @@ TEST(Branchless, SqrtIsTheLibrarySquareRootForNonNegativeValues) {
 }
 
 TEST(Branchless, RoundNearOneIsTheLibraryRoundBitForBit) {
+  // Floating-point traps paused (docs/reliability.md): NaN and infinite
+  // operands on purpose (RoundNearOne compares them).
+  const sparsedyn::testing::FloatingPointTrapsPaused traps_paused;
   std::vector<double> values = Values();
   for (const double edge : {0.5, 1.5, 2.5, 1.0}) {
     for (const double x : {edge, std::nextafter(edge, 0.0), std::nextafter(edge, 10.0)}) {

@@ -10,11 +10,15 @@
 #include <vector>
 
 #include "math/event_time.hpp"
+#include "support/fp_traps.hpp"
 
 namespace sparsedyn {
 namespace {
 
 TEST(EventTime, NextDownIsNextafterTowardMinusInfinity) {
+  // Floating-point traps paused (docs/reliability.md): the next double
+  // down from -DBL_MAX is -infinity (an overflow), on purpose.
+  const sparsedyn::testing::FloatingPointTrapsPaused traps_paused;
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> values = {0.0,
                                 -0.0,

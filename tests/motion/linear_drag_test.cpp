@@ -99,8 +99,10 @@ TEST(LinearDrag, MatchesTheTextbookFormulaWithinItsBound) {
     ASSERT_LE(ex, s.position_error);
     ASSERT_LE(ev, s.velocity_error);
     ASSERT_LE(ea, s.acceleration_error);
-    worst =
-        std::max({worst, ex / s.position_error, ev / s.velocity_error, ea / s.acceleration_error});
+    // A zero bound was met exactly above (and counts as no part of it).
+    const auto part = [](double error, double bound) { return bound > 0 ? error / bound : 0.0; };
+    worst = std::max({worst, part(ex, s.position_error), part(ev, s.velocity_error),
+                      part(ea, s.acceleration_error)});
   }
   // The bound is not vacuous: the worst case uses a sizeable part of it.
   std::printf("largest closed-form error / bound: %.3g\n", worst);

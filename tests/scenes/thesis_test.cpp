@@ -197,11 +197,7 @@ TEST(Thesis, PresetIsRegisteredAndUsesTheRequest) {
   const std::vector<std::string> names = PresetNames();
   EXPECT_NE(std::find(names.begin(), names.end(), "thesis"), names.end());
   Result<Preset> preset = MakePreset({.name = "thesis", .n = 20, .density = 0.1, .seed = 5});
-  if (!preset) {
-    // Until issue #4 the World refuses polyhedra: the Error must say it is the World's refusal.
-    EXPECT_NE(preset.error().message.find("thesis: "), std::string::npos);
-    GTEST_SKIP() << "BuildWorld refuses polyhedra: " << preset.error().message;
-  }
+  ASSERT_TRUE(preset) << preset.error().message;
   EXPECT_EQ(preset->world.BodyCount(), 20u);
   Result<SceneDescription> scene = MakeThesisScene({.n = 20, .packing = 0.1, .seed = 5});
   ASSERT_TRUE(scene);

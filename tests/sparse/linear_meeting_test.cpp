@@ -7,9 +7,21 @@
 #include <cfloat>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "scenes/random.hpp"
 #include "sparse/meeting.hpp"
+
+namespace {
+// The oracle's quad precision: GCC's __float128 on x86-64, long double where that is IEEE quad
+// (aarch64 Linux, scripts/aarch64.sh).
+#if defined(__SIZEOF_FLOAT128__)
+using Quad = __float128;
+#else
+using Quad = long double;
+static_assert(std::numeric_limits<long double>::digits >= 113, "the oracle needs quad precision");
+#endif
+}  // namespace
 
 namespace sparsedyn {
 namespace {
@@ -18,19 +30,19 @@ namespace {
 // floats (113-bit significands): the rounding of these few operations on doubles is far below
 // the margins the certification keeps, so their signs are the exact ones.
 struct QuadGap {
-  __float128 g, slope;
+  Quad g, slope;
 };
 QuadGap QuadGapAt(const Vec3& pa, const Vec3& va, const Vec3& pb, const Vec3& vb, const Vec3& shift,
                   double reach, double dt) {
-  __float128 q2 = 0, qdv = 0;
+  Quad q2 = 0, qdv = 0;
   for (int k = 0; k < 3; ++k) {
-    const __float128 dp = static_cast<__float128>(pb[k]) + shift[k] - pa[k];
-    const __float128 dv = static_cast<__float128>(vb[k]) - va[k];
-    const __float128 q = dp + dv * static_cast<__float128>(dt);
+    const Quad dp = static_cast<Quad>(pb[k]) + shift[k] - pa[k];
+    const Quad dv = static_cast<Quad>(vb[k]) - va[k];
+    const Quad q = dp + dv * static_cast<Quad>(dt);
     q2 += q * q;
     qdv += q * dv;
   }
-  const __float128 r = reach;
+  const Quad r = reach;
   return {q2 - r * r, 2 * qdv};
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "scenes/random.hpp"
+#include "support/fp_traps.hpp"
 #include "support/meeting_oracle.hpp"
 
 namespace sparsedyn {
@@ -165,8 +166,8 @@ void CheckRandomPairs(int pairs, std::uint64_t seed) {
       } else if (predicted > *truth + kLateSlack * (1 + *truth)) {
         ++late;
       }
-    } else if (predicted != kInfinity &&
-               testing::OracleGap(a, b, predicted) > 1e-9L * (1 + a.p.squaredNorm() + b.p.squaredNorm())) {
+    } else if (predicted != kInfinity && testing::OracleGap(a, b, predicted) >
+                                             1e-9L * (1 + a.p.squaredNorm() + b.p.squaredNorm())) {
       ++spurious;  // a predicted meeting that is no meeting at all
     }
   }
@@ -215,6 +216,9 @@ TEST(CertainlyApart, NeverClaimsAPairThatMeetsWithinTheTime) {
 // verdicts read with the axis and step swapped would name the wrong images. With no time span
 // (h < 0) or an unbounded one, no verdict at all.
 TEST(CertainlyApart, SlabVerdictHoldsForEveryImageInTheSlab) {
+  // Floating-point traps paused (docs/reliability.md): spans of -1,
+  // infinity and NaN on purpose (the bound's guard !(h >= 0) compares NaN).
+  const sparsedyn::testing::FloatingPointTrapsPaused traps_paused;
   scenes::Random random(20261129);
   const Vec3 length(11, 12, 13);  // RandomMoverPair's points are within [-5, 5]^3
   const std::array<Vec3, 3> along = {-length, Vec3::Zero(), length};
@@ -298,6 +302,9 @@ TEST(CertainlyApart, SlabVerdictsSkipTheImagesOfTheirSteps) {
 // short of the contact, not within the contact time itself; the axis bound alone settles a pair
 // offset along z that the overall distance would not.
 TEST(CertainlyApart, IsTightForAHeadOnPairAndUsesEachAxis) {
+  // Floating-point traps paused (docs/reliability.md): infinite and NaN
+  // spans on purpose (the bound's guard !(h >= 0) compares NaN).
+  const sparsedyn::testing::FloatingPointTrapsPaused traps_paused;
   const Mover a = Sphere(Vec3(0, 0, 0), Vec3(1, 0, 0), 0.5);
   const Mover b = Sphere(Vec3(4, 0, 0), Vec3(-1, 0, 0), 0.5);
   EXPECT_TRUE(CertainlyApartWithin(a, b, Vec3::Zero(), 1.5 * (1 - 1e-4)));

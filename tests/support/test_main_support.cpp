@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
-// Makes SPARSEDYN_ASSERT failures inside tests fail loudly with their message; linked into
-// every test executable through sparsedyn_test_support.
+// Makes SPARSEDYN_ASSERT failures inside tests fail loudly with their message, and turns on the
+// floating-point traps (support/fp_traps.hpp); linked into every test executable through
+// sparsedyn_test_support.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <cstdlib>
 
 #include "sparsedyn/assert.hpp"
+#include "support/fp_traps.hpp"
 
 namespace {
 
@@ -19,9 +21,12 @@ namespace {
   std::abort();
 }
 
-// Installed before main() runs so that even static initialisers are covered.
+// Installed before main() runs so that even static initialisers are covered. The traps can be
+// left off (SPARSEDYN_FP_TRAPS=0) to see how far a trapping test gets.
 const bool kInstalled = [] {
   sparsedyn::SetAssertHandler(&TestAssertHandler);
+  const char* traps = std::getenv("SPARSEDYN_FP_TRAPS");
+  if (traps == nullptr || traps[0] != '0') sparsedyn::testing::EnableFloatingPointTraps();
   return true;
 }();
 

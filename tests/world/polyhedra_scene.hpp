@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 
+#include "scenes/random.hpp"
 #include "sparsedyn/geometry/generators.hpp"
 #include "sparsedyn/world.hpp"
 
@@ -59,10 +60,10 @@ inline World MakePolyhedraWorld(const PolyhedraSceneOptions& o) {
     def.shape = pool[static_cast<std::size_t>(i) % pool.size()];
     const Vec3 cell(i % side, (i / side) % side, i / (side * side));
     def.position = (cell + Vec3::Constant(0.5)) * o.spacing +
-                   jitter * Vec3(unit(rng), unit(rng), unit(rng));
-    def.orientation = Eigen::Quaterniond(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
-    def.velocity = o.speed * Vec3(unit(rng), unit(rng), unit(rng));
-    def.angular_velocity = o.spin * Vec3(unit(rng), unit(rng), unit(rng));
+                   jitter * scenes::DrawVector([&] { return unit(rng); });
+    def.orientation = scenes::DrawQuaternion([&] { return unit(rng); }).normalized();
+    def.velocity = o.speed * scenes::DrawVector([&] { return unit(rng); });
+    def.angular_velocity = o.spin * scenes::DrawVector([&] { return unit(rng); });
     def.mass = 0.5 + 0.5 * (unit(rng) + 1.0);
     def.restitution = o.restitution;
     def.friction = o.friction;
