@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "base/format.hpp"
+#include "narrow/point_features.hpp"
+#include "sparsedyn/narrow/closest_features.hpp"
 #include "world/body_checks.hpp"
 #include "world/hostile_values.hpp"
 
@@ -36,11 +38,6 @@ Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t s
   if (std::optional<Error> error = CheckHostileValues(def, core_.settings, slot)) return *error;
   const std::string body = "body " + std::to_string(slot) + ": ";
   const bool polyhedron = def.shape != nullptr;
-  const BodyStore& bodies = core_.bodies;
-  if (bodies.Size() > 0 && polyhedron != bodies.rigid.AnyPolyhedron()) {
-    return Error{body + "a World holds spheres or polyhedra, not both (this body is a " +
-                 (polyhedron ? "polyhedron" : "sphere") + ", body 0 is not)"};
-  }
   if (polyhedron && !def.envelope.IsZero()) {
     return Error{body + "envelopes are for spheres; a polyhedron's path is exact"};
   }
@@ -171,6 +168,7 @@ std::optional<Error> Admission::CheckApart(const Placement& placement, std::uint
   const BodyStore& bodies = core_.bodies;
   const Vec3& p = placement.position;
   std::optional<std::uint32_t> found;  // the lowest public slot touched
+  bool spheres = false;                // ... and whether both are spheres
   double distance = 0;
   ForEachNear(p, placement.radius, exclude, started,
               [&](std::uint32_t j, const Vec3& q, const Eigen::Quaterniond& q_j) {
@@ -178,26 +176,40 @@ std::optional<Error> Admission::CheckApart(const Placement& placement, std::uint
     const double reach = placement.radius + bodies.materials.Radius(j);
     const std::uint32_t slot = bodies.ids.PublicOf(j);
     if (found && slot >= *found) return;
-    if (placement.shape == nullptr) {
+    const BodyShape* shape_j = bodies.IsPolyhedron(j) ? &bodies.rigid.ShapeOf(j) : nullptr;
+    if (placement.shape == nullptr && shape_j == nullptr) {
       // Spheres: overlapping beyond round-off.
       if (d.squaredNorm() < reach * reach * (1 - 1e-12)) {
         found = slot;
+        spheres = true;
         distance = d.norm() - reach;
       }
       return;
     }
-    // Polyhedra: touching within the tolerance counts.
+    // A polyhedron on either side: touching within the tolerance counts.
     if (d.squaredNorm() >= reach * reach) return;
-    const ClosestFeatures features =
-        FindClosestFeatures(*placement.shape->tracked, Pose{placement.orientation, p},
-                            *bodies.rigid.ShapeOf(j).tracked, Pose{q_j, p + d});
-    if (features.distance <= core_.settings.contact_tolerance * reach) {
+    double gap = 0;
+    if (placement.shape != nullptr && shape_j != nullptr) {
+      gap = FindClosestFeatures(*placement.shape->tracked, Pose{placement.orientation, p},
+                                *shape_j->tracked, Pose{q_j, p + d})
+                .distance;
+    } else if (placement.shape != nullptr) {
+      gap = FindClosestFeatureToPoint(*placement.shape->tracked, Pose{placement.orientation, p},
+                                      p + d)
+                .distance -
+            bodies.materials.Radius(j);
+    } else {
+      gap = FindClosestFeatureToPoint(*shape_j->tracked, Pose{q_j, p + d}, p).distance -
+            placement.radius;
+    }
+    if (gap <= core_.settings.contact_tolerance * reach) {
       found = slot;
-      distance = features.distance;
+      spheres = false;
+      distance = gap;
     }
   });
   if (!found) return std::nullopt;
-  if (placement.shape == nullptr) {
+  if (spheres) {
     return Error{body + "overlaps body " + std::to_string(*found) + " at the start (t = " +
                  FormatExact(core_.Now()) + ")"};
   }

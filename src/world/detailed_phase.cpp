@@ -3,13 +3,14 @@
 
 #include "world/polyhedron_contacts.hpp"
 #include "world/sphere_contacts.hpp"
+#include "world/sphere_polyhedron_contacts.hpp"
 
 namespace sparsedyn {
 
 PairKind DetailedPhase::KindOf(std::uint32_t a, std::uint32_t b) const {
   const bool poly_a = core_.bodies.IsPolyhedron(a), poly_b = core_.bodies.IsPolyhedron(b);
   if (poly_a && poly_b) return PairKind::kPolyhedra;
-  SPARSEDYN_ASSERT(!poly_a && !poly_b, "a sphere and a polyhedron engaged (not supported yet)");
+  if (poly_a || poly_b) return PairKind::kSpherePolyhedron;
   return PairKind::kSpheres;
 }
 
@@ -29,6 +30,9 @@ void DetailedPhase::Predict(std::uint32_t k) {
     case PairKind::kPolyhedra:
       polyhedra_->PredictEngagement(k);
       break;
+    case PairKind::kSpherePolyhedron:
+      mixed_->PredictEngagement(k);
+      break;
   }
 }
 
@@ -40,6 +44,9 @@ void DetailedPhase::Handle(std::uint32_t k) {
       break;
     case PairKind::kPolyhedra:
       polyhedra_->HandleEngagement(k);
+      break;
+    case PairKind::kSpherePolyhedron:
+      mixed_->HandleEngagement(k);
       break;
   }
 }
@@ -58,6 +65,29 @@ void DetailedPhase::End(std::uint32_t k) {
   engagements_.Remove(k);
   ++core_.observers.stats().engagements_ended;
   sparse_.PredictFull(a);
+}
+
+void DetailedPhase::AfterRigidCollision(std::uint32_t a, std::uint32_t b,
+                                        const ContactGeometry& contact,
+                                        const RigidImpulseResult& result) {
+  Statistics& stats = core_.observers.stats();
+  core_.observers.NotePenetration(contact.distance);
+  ++stats.collisions;
+  if (result.guarded) ++stats.collapse_guarded;
+  if (core_.observers.WantsCollisions()) {
+    const BodyIds& ids = core_.bodies.ids;
+    core_.observers.Collision(CollisionEvent{core_.Now(), ids.IdOf(a), ids.IdOf(b), -1,
+                                             result.point, contact.normal,
+                                             result.normal_impulse});
+  }
+  // Both bodies' element predictions are superseded (actor-absent, §4.2), replaced in place.
+  for (const std::uint32_t body : {a, b}) {
+    if (sparse_.PredictionOf(body).kind != EventKind::kNone) ++stats.stale_actor_absent;
+  }
+  sparse_.PredictFull(a);
+  sparse_.PredictFull(b);
+  PredictEngagementsOf(a);
+  PredictEngagementsOf(b, /*done_partner=*/a);
 }
 
 void DetailedPhase::PredictEngagementsOf(std::uint32_t i, std::uint32_t done_partner) {

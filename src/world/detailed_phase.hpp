@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "dynamics/rigid_collision.hpp"
 #include "events/calendar_queue.hpp"
 #include "events/engagements.hpp"
 #include "world/sparse_phase.hpp"
@@ -12,11 +13,13 @@ namespace sparsedyn {
 
 class SphereContacts;
 class PolyhedronContacts;
+class SpherePolyhedronContacts;
 
 /// The kinds of engaged pairs, each watched by its own contact model.
 enum class PairKind : std::uint8_t {
   kSpheres,     // two spheres with envelopes (the bodies are the element spheres themselves)
   kPolyhedra,   // two convex polyhedra: closest-feature tracking (§5.2)
+  kSpherePolyhedron,  // a sphere and a convex polyhedron: the feature closest to the centre
 };
 
 /// The detailed phase (§3.3, §5.2): the engaged pairs, each with one slot in the engagement
@@ -26,9 +29,11 @@ enum class PairKind : std::uint8_t {
 class DetailedPhase {
  public:
   DetailedPhase(WorldCore& core, SparsePhase& sparse) : core_(core), sparse_(sparse) {}
-  void SetModels(SphereContacts* spheres, PolyhedronContacts* polyhedra) {
+  void SetModels(SphereContacts* spheres, PolyhedronContacts* polyhedra,
+                 SpherePolyhedronContacts* mixed) {
     spheres_ = spheres;
     polyhedra_ = polyhedra;
+    mixed_ = mixed;
   }
 
   PairKind KindOf(std::uint32_t a, std::uint32_t b) const;
@@ -43,6 +48,10 @@ class DetailedPhase {
   /// The element spheres separate: the engagement ends and a looks for its next meeting (which
   /// may be with b again).
   void End(std::uint32_t k);
+  /// After the rigid impulse of engaged a and b (their paths already changed): the collision
+  /// counted and reported, then both bodies' elements and engagements predict again.
+  void AfterRigidCollision(std::uint32_t a, std::uint32_t b, const ContactGeometry& contact,
+                           const RigidImpulseResult& result);
   /// Predicts all of i's engagements again, except the one with `done_partner` (a pair that
   /// collided has its engagement predicted once, from its first body).
   void PredictEngagementsOf(std::uint32_t i, std::uint32_t done_partner = kNoIndex);
@@ -62,6 +71,7 @@ class DetailedPhase {
   SparsePhase& sparse_;
   SphereContacts* spheres_ = nullptr;
   PolyhedronContacts* polyhedra_ = nullptr;
+  SpherePolyhedronContacts* mixed_ = nullptr;
   Engagements engagements_;
   CalendarQueue queue_;  // one slot per engagement
 };

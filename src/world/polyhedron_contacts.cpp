@@ -8,20 +8,10 @@
 #include "narrow/time_of_contact.hpp"
 #include "sparse/meeting.hpp"
 #include "world/contact_band.hpp"
+#include "world/pair_frame.hpp"
 #include "world/phase_timer.hpp"
 
 namespace sparsedyn {
-
-Vec3 PolyhedronContacts::PairShift(std::uint32_t a, std::uint32_t b) const {
-  const ElementPaths& paths = core_.bodies.paths;
-  const Vec3 d = paths.PathOf(b).PositionAt(paths.Now()) - paths.PathOf(a).PositionAt(paths.Now());
-  return core_.MinimumImage(d) - d;
-}
-
-double PolyhedronContacts::PairTolerance(std::uint32_t a, std::uint32_t b) const {
-  const BodyMaterials& materials = core_.bodies.materials;
-  return core_.settings.contact_tolerance * (materials.Radius(a) + materials.Radius(b));
-}
 
 ClosestFeatures PolyhedronContacts::PairFeatures(std::uint32_t a, std::uint32_t b,
                                                  const Vec3& shift,
@@ -40,14 +30,14 @@ void PolyhedronContacts::PredictEngagement(std::uint32_t k) {
   const BodyStore& bodies = core_.bodies;
   const double now = bodies.paths.Now();
   Engagements::Engagement& e = detailed_.engagements()[k];
-  const Vec3 shift = PairShift(e.a, e.b);
+  const Vec3 shift = PairShift(core_, e.a, e.b);
   RigidPath path_a = bodies.RigidPathOf(e.a);
   RigidPath path_b = bodies.RigidPathOf(e.b);
   path_b.centre.p0 += shift;
   // The engagement lasts while the element spheres overlap.
   const double separation = EventTime(
       now, PredictSeparation(bodies.MoverOf(e.a, now), bodies.MoverOf(e.b, now), shift));
-  const double tolerance = PairTolerance(e.a, e.b);
+  const double tolerance = PairTolerance(core_, e.a, e.b);
   const std::optional<FeaturePair> warm =
       e.has_features ? std::optional<FeaturePair>(e.features) : std::nullopt;
   const ClosestFeatures current = PairFeatures(e.a, e.b, shift, warm);
@@ -95,14 +85,14 @@ void PolyhedronContacts::HandleEngagement(std::uint32_t k) {
     return;
   }
   Statistics& stats = core_.observers.stats();
-  const Vec3 shift = PairShift(e.a, e.b);
+  const Vec3 shift = PairShift(core_, e.a, e.b);
   ClosestFeatures features;
   {
     const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_detailed);
     features = PairFeatures(e.a, e.b, shift, e.features);
   }
   e.features = features.features;
-  const double tolerance = PairTolerance(e.a, e.b);
+  const double tolerance = PairTolerance(core_, e.a, e.b);
   if (features.distance > tolerance) {
     ++stats.early_events;
     PredictEngagement(k);
@@ -143,7 +133,7 @@ bool PolyhedronContacts::Collide(std::uint32_t a, std::uint32_t b,
     const Pose pose_b = path_b.PoseAt(now);
     contact = ContactFromFeatures(*bodies.rigid.ShapeOf(a).polyhedron, pose_a,
                                   *bodies.rigid.ShapeOf(b).polyhedron, pose_b, features,
-                                  PairTolerance(a, b));
+                                  PairTolerance(core_, a, b));
     RigidBodyState body_a{pose_a.translation, path_a.centre.VelocityAt(now),
                           bodies.rigid.Omega(a), bodies.materials.InvMass(a),
                           bodies.InvInertiaWorld(a, pose_a.rotation)};
@@ -159,22 +149,7 @@ bool PolyhedronContacts::Collide(std::uint32_t a, std::uint32_t b,
     changes_.SetMotion(a, body_a.velocity, body_a.angular_velocity);
     changes_.SetMotion(b, body_b.velocity, body_b.angular_velocity);
   }
-  core_.observers.NotePenetration(contact.distance);
-  ++stats.collisions;
-  if (result.guarded) ++stats.collapse_guarded;
-  if (core_.observers.WantsCollisions()) {
-    core_.observers.Collision(CollisionEvent{now, bodies.ids.IdOf(a), bodies.ids.IdOf(b), -1,
-                                             result.point, contact.normal,
-                                             result.normal_impulse});
-  }
-  // Both bodies' element predictions are superseded (actor-absent, §4.2), replaced in place.
-  for (const std::uint32_t body : {a, b}) {
-    if (sparse_.PredictionOf(body).kind != EventKind::kNone) ++stats.stale_actor_absent;
-  }
-  sparse_.PredictFull(a);
-  sparse_.PredictFull(b);
-  detailed_.PredictEngagementsOf(a);
-  detailed_.PredictEngagementsOf(b, /*done_partner=*/a);
+  detailed_.AfterRigidCollision(a, b, contact, result);
   return true;
 }
 

@@ -25,10 +25,6 @@ class PolyhedronContacts {
   void PredictEngagement(std::uint32_t k);
   void HandleEngagement(std::uint32_t k);
 
-  /// The shift that takes b to its periodic image nearest to a (zero outside periodic boxes).
-  Vec3 PairShift(std::uint32_t a, std::uint32_t b) const;
-  /// The pair's contact tolerance, m.
-  double PairTolerance(std::uint32_t a, std::uint32_t b) const;
   /// The closest features of a and b's image at `shift` now.
   ClosestFeatures PairFeatures(std::uint32_t a, std::uint32_t b, const Vec3& shift,
                                std::optional<FeaturePair> warm) const;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "base/format.hpp"
+#include "world/pair_frame.hpp"
 #include "world/world_impl.hpp"
 
 namespace sparsedyn {
@@ -22,51 +23,57 @@ std::string BeyondWall(std::uint32_t a, int wall, double depth, double t) {
 
 }  // namespace
 
+double World::Impl::GapNow(std::uint32_t i, std::uint32_t j) const {
+  const BodyStore& bodies = core_.bodies;
+  const bool poly_i = bodies.IsPolyhedron(i), poly_j = bodies.IsPolyhedron(j);
+  if (!poly_i && !poly_j) {
+    const double now = core_.Now();
+    const Vec3 d = core_.MinimumImage(bodies.paths.PathOf(j).PositionAt(now) -
+                                      bodies.paths.PathOf(i).PositionAt(now));
+    return d.norm() - bodies.materials.Radius(i) - bodies.materials.Radius(j);
+  }
+  if (poly_i && poly_j) {
+    return polyhedra_.PairFeatures(i, j, PairShift(core_, i, j), std::nullopt).distance;
+  }
+  const std::uint32_t p = poly_i ? i : j, s = poly_i ? j : i;
+  return mixed_.Closest(p, s, std::nullopt).distance - bodies.materials.Radius(s);
+}
+
+double World::Impl::WallGapNow(std::uint32_t i, int wall) const {
+  const BodyStore& bodies = core_.bodies;
+  const double now = core_.Now();
+  const WallPlane plane = BoxWall(core_.settings.container, wall);
+  if (!bodies.IsPolyhedron(i)) {
+    return plane.normal.dot(bodies.paths.PathOf(i).PositionAt(now)) - plane.offset -
+           bodies.materials.Radius(i);
+  }
+  const Pose pose = bodies.RigidPathOf(i).PoseAt(now);
+  const ConvexPolyhedron& polyhedron = *bodies.rigid.ShapeOf(i).polyhedron;
+  const Vec3 n_B = pose.rotation.conjugate() * plane.normal;
+  return plane.normal.dot(pose.ToWorld(polyhedron.vertex(polyhedron.SupportVertex(-n_B)))) -
+         plane.offset;
+}
+
 Status World::Impl::Validate() const {
   const BodyStore& bodies = core_.bodies;
   const auto n = bodies.Size();
   const double now = core_.Now();
   const double tolerance = core_.settings.contact_tolerance;
-  if (bodies.rigid.AnyPolyhedron()) {
-    for (std::uint32_t i = 0; i < n; ++i) {
-      for (std::uint32_t j = i + 1; j < n; ++j) {
-        const Vec3 shift = polyhedra_.PairShift(i, j);
-        const Vec3 d = bodies.paths.PathOf(j).PositionAt(now) + shift -
-                       bodies.paths.PathOf(i).PositionAt(now);
-        const double reach = bodies.materials.Radius(i) + bodies.materials.Radius(j);
-        if (d.squaredNorm() >= reach * reach) continue;
-        const ClosestFeatures f = polyhedra_.PairFeatures(i, j, shift, std::nullopt);
-        if (f.distance < -polyhedra_.PairTolerance(i, j)) {
-          return Error{"bodies " + std::to_string(bodies.ids.PublicOf(i)) + " and " +
-                       std::to_string(bodies.ids.PublicOf(j)) + " interpenetrate by " +
-                       FormatExact(-f.distance) + " at t = " + FormatExact(now)};
-        }
-      }
-      if (!core_.Walled()) continue;
-      const Pose pose = bodies.RigidPathOf(i).PoseAt(now);
-      const ConvexPolyhedron& polyhedron = *bodies.rigid.ShapeOf(i).polyhedron;
-      for (int w = 0; w < 6; ++w) {
-        const WallPlane plane = BoxWall(core_.settings.container, w);
-        const Vec3 n_B = pose.rotation.conjugate() * plane.normal;
-        const double gap =
-            plane.normal.dot(pose.ToWorld(polyhedron.vertex(polyhedron.SupportVertex(-n_B)))) -
-            plane.offset;
-        if (gap < -tolerance * bodies.materials.Radius(i)) {
-          return Error{BeyondWall(bodies.ids.PublicOf(i), w, -gap, now)};
-        }
-      }
-    }
-    return Status::Ok();
-  }
+  // Pairs whose element spheres overlap (the elements of polyhedra are their bounding spheres),
+  // from the grid's neighbours when there is one, else every pair.
   auto check_pair = [&](std::uint32_t i, std::uint32_t j) -> std::optional<Error> {
     const Vec3 d = core_.MinimumImage(bodies.paths.PathOf(j).PositionAt(now) -
                                       bodies.paths.PathOf(i).PositionAt(now));
     const double reach = bodies.materials.Radius(i) + bodies.materials.Radius(j);
-    const double gap = d.norm() - reach;
-    if (gap < -tolerance * reach) {
-      return Error{Overlap(bodies.ids.PublicOf(i), bodies.ids.PublicOf(j), -gap, now)};
+    if (d.squaredNorm() >= reach * reach) return std::nullopt;
+    const double gap = GapNow(i, j);
+    if (gap >= -tolerance * reach) return std::nullopt;
+    const std::uint32_t a = bodies.ids.PublicOf(i), b = bodies.ids.PublicOf(j);
+    if (bodies.IsPolyhedron(i) || bodies.IsPolyhedron(j)) {
+      return Error{"bodies " + std::to_string(a) + " and " + std::to_string(b) +
+                   " interpenetrate by " + FormatExact(-gap) + " at t = " + FormatExact(now)};
     }
-    return std::nullopt;
+    return Error{Overlap(a, b, -gap, now)};
   };
   for (std::uint32_t i = 0; i < n; ++i) {
     if (sparse_.grid()) {
@@ -80,14 +87,11 @@ Status World::Impl::Validate() const {
         if (std::optional<Error> error = check_pair(i, j)) return *error;
       }
     }
-    if (core_.Walled()) {
-      const Vec3 p = bodies.paths.PathOf(i).PositionAt(now);
-      for (int w = 0; w < 6; ++w) {
-        const WallPlane plane = BoxWall(core_.settings.container, w);
-        const double gap = plane.normal.dot(p) - plane.offset - bodies.materials.Radius(i);
-        if (gap < -tolerance * bodies.materials.Radius(i)) {
-          return Error{BeyondWall(bodies.ids.PublicOf(i), w, -gap, now)};
-        }
+    if (!core_.Walled()) continue;
+    for (int w = 0; w < 6; ++w) {
+      const double gap = WallGapNow(i, w);
+      if (gap < -tolerance * bodies.materials.Radius(i)) {
+        return Error{BeyondWall(bodies.ids.PublicOf(i), w, -gap, now)};
       }
     }
   }

@@ -18,13 +18,14 @@ World::Impl::Impl(const WorldSettings& settings)
       changes_(core_, sparse_),
       spheres_(core_, sparse_, detailed_, changes_),
       polyhedra_(core_, sparse_, detailed_, changes_),
+      mixed_(core_, sparse_, detailed_, changes_),
       walls_(core_, sparse_, detailed_, changes_),
       memory_(core_, sparse_, detailed_),
       look_ahead_(core_.bodies.paths, sparse_),
       admission_(core_) {
   core_.bodies.paths.SetNow(settings.start_time);
   sparse_.SetWalls(&walls_);
-  detailed_.SetModels(&spheres_, &polyhedra_);
+  detailed_.SetModels(&spheres_, &polyhedra_, &mixed_);
 }
 
 Result<BodyId> World::Impl::AddBody(const BodyDef& def) {

@@ -12,6 +12,7 @@
 #include "world/polyhedron_contacts.hpp"
 #include "world/sparse_phase.hpp"
 #include "world/sphere_contacts.hpp"
+#include "world/sphere_polyhedron_contacts.hpp"
 #include "world/wall_contacts.hpp"
 #include "world/world_core.hpp"
 
@@ -35,6 +36,10 @@ class World::Impl {
   std::size_t MemoryBytes() const;
   /// Checks the invariants at the current time (world/validation.cpp).
   Status Validate() const;
+  /// The signed gap of bodies i and j now by their kinds (negative: overlap), m.
+  double GapNow(std::uint32_t i, std::uint32_t j) const;
+  /// The signed gap of body i and wall `wall` (BoxWall's numbering) now, m.
+  double WallGapNow(std::uint32_t i, int wall) const;
 
   // --- changes between AdvanceTo calls (changes.cpp) ---
   Status RemoveBody(BodyId id);
@@ -78,6 +83,7 @@ class World::Impl {
   PathChanges changes_;
   SphereContacts spheres_;
   PolyhedronContacts polyhedra_;
+  SpherePolyhedronContacts mixed_;
   WallContacts walls_;
   MemoryOrder memory_;
   LookAhead look_ahead_;

@@ -29,7 +29,15 @@ struct PolyhedraSceneOptions {
   double friction = 0.0;
   RotationModel rotation_model = RotationModel::kSphericalTop;
   Broadphase broadphase = Broadphase::kGrid;
+  int sphere_every = 0;   // > 0: bodies 0, k, 2k, ... are spheres (a mixed world)
 };
+
+/// The radius of body i's sphere in a mixed scene (IsSphere), drawn from nothing random so that
+/// the references know it.
+inline bool IsSphere(const PolyhedraSceneOptions& o, int i) {
+  return o.sphere_every > 0 && i % o.sphere_every == 0;
+}
+inline double SphereRadius(int i) { return 0.55 + 0.4 * ((i * 7) % 10) / 10.0; }
 
 inline std::vector<std::shared_ptr<const ConvexPolyhedron>> ShapePool(std::uint64_t seed) {
   std::vector<std::shared_ptr<const ConvexPolyhedron>> pool;
@@ -67,6 +75,10 @@ inline World MakePolyhedraWorld(const PolyhedraSceneOptions& o) {
     def.mass = 0.5 + 0.5 * (unit(rng) + 1.0);
     def.restitution = o.restitution;
     def.friction = o.friction;
+    if (IsSphere(o, i)) {
+      def.shape = nullptr;
+      def.radius = SphereRadius(i);
+    }
     world.AddBody(def).value();
   }
   return world;
