@@ -17,6 +17,7 @@ struct Statistics {
   std::uint64_t meetings = 0;             ///< live element meetings (sparse phase)
   std::uint64_t collisions = 0;           ///< body-body impulses
   std::uint64_t wall_collisions = 0;      ///< body-wall impulses
+  std::uint64_t static_collisions = 0;    ///< impulses against static bodies (in collisions too)
   std::uint64_t early_events = 0;         ///< a meeting that was not yet touching: predicted again
   std::uint64_t collapse_guarded = 0;     ///< collisions made elastic by the collapse guard
   std::uint64_t wall_holds = 0;  ///< spheres brought to rest by a wall (also wall collisions)

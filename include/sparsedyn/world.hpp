@@ -111,6 +111,10 @@ struct BodyDef {
   double restitution = 1.0;            ///< 1 = elastic; the collision uses the product of the two
   double friction = 0.0;               ///< Coulomb coefficient; a pair uses sqrt(mu_a mu_b)
   Envelope envelope;                   ///< growth of the bounding sphere beyond the body (App. F)
+  /// A static body: fixed where it is placed, of infinite mass, with no events of its own (a
+  /// floor, a table, a cushion). Any shape; velocity, spin, thrust and envelope must be zero.
+  /// It may touch other bodies at the start, not overlap them. Not in periodic boxes.
+  bool is_static = false;
 };
 
 /// A body's state evaluated from its path at some time.

@@ -77,17 +77,21 @@ class Engagements {
   /// Ends every engagement.
   void Clear() { *this = Engagements{}; }
 
-  /// The bodies were renumbered (World's memory order): body b is now new_of_old[b]. The
-  /// engagement ids, and so the engagement queue, stay as they are.
+  /// The bodies were renumbered (World's memory order): body b is now new_of_old[b]; a
+  /// partner named beyond new_of_old (a static body's key) keeps its name. The engagement ids,
+  /// and so the engagement queue, stay as they are.
   void Renumber(const std::vector<std::uint32_t>& new_of_old) {
+    const auto renamed = [&](std::uint32_t body) {
+      return body < new_of_old.size() ? new_of_old[body] : body;
+    };
     std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> by_body;
     by_body.reserve(by_body_.size());
-    for (auto& [body, ids] : by_body_) by_body.emplace(new_of_old[body], std::move(ids));
+    for (auto& [body, ids] : by_body_) by_body.emplace(renamed(body), std::move(ids));
     by_body_.swap(by_body);
     for (Engagement& e : items_) {
       if (!e.alive) continue;
-      e.a = new_of_old[e.a];
-      e.b = new_of_old[e.b];
+      e.a = renamed(e.a);
+      e.b = renamed(e.b);
     }
   }
 

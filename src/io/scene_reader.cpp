@@ -186,7 +186,7 @@ class SceneParser {
   void ParseBody(const json& value, const std::string& path) {
     if (!checker_.Object(value, path,
                          {"shape", "position", "orientation", "velocity", "angular_velocity",
-                          "thrust", "mass", "density", "restitution", "friction"})) {
+                          "thrust", "mass", "density", "restitution", "friction", "static"})) {
       return;
     }
     SceneBody body;
@@ -204,6 +204,13 @@ class SceneParser {
     vector("angular_velocity", body.angular_velocity);
     vector("thrust", body.thrust);
     if (value.contains("orientation")) ParseOrientation(value["orientation"], path, body);
+    if (value.contains("static")) {
+      if (value["static"].is_boolean()) {
+        body.is_static = value["static"].get<bool>();
+      } else {
+        checker_.Fail(Key(path, "static"), "must be true or false");
+      }
+    }
     ParseMass(value, path, body);
     if (value.contains("restitution")) {
       if (auto e = checker_.NumberIn(value["restitution"], Key(path, "restitution"), 0, 1)) {

@@ -39,6 +39,7 @@ ordered_json BodyJson(const SceneDescription& scene, const SceneBody& body) {
   }
   out["restitution"] = body.restitution;
   out["friction"] = body.friction;
+  if (body.is_static) out["static"] = true;
   return out;
 }
 
@@ -98,6 +99,7 @@ BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index) {
   def.mass = body.mass;
   def.restitution = body.restitution;
   def.friction = body.friction;
+  def.is_static = body.is_static;
   return def;
 }
 

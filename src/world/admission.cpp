@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "world/admission.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "base/format.hpp"
@@ -8,6 +9,7 @@
 #include "sparsedyn/narrow/closest_features.hpp"
 #include "world/body_checks.hpp"
 #include "world/hostile_values.hpp"
+#include "world/solid_gap.hpp"
 
 namespace sparsedyn {
 
@@ -38,6 +40,9 @@ Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t s
   if (std::optional<Error> error = CheckHostileValues(def, core_.settings, slot)) return *error;
   const std::string body = "body " + std::to_string(slot) + ": ";
   const bool polyhedron = def.shape != nullptr;
+  if (def.is_static) {
+    if (std::optional<Error> error = CheckStatic(def, body)) return *error;
+  }
   if (polyhedron && !def.envelope.IsZero()) {
     return Error{body + "envelopes are for spheres; a polyhedron's path is exact"};
   }
@@ -61,10 +66,49 @@ Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t s
   }
   // A polyhedron's element sphere is its bounding sphere about the centroid.
   accepted.radius = polyhedron ? shape->polyhedron->bounding_radius() : def.radius;
-  const Placement placement{def.position, def.orientation.normalized(), shape, accepted.radius};
+  const Placement placement{def.position, def.orientation.normalized(), shape, accepted.radius,
+                            def.is_static};
   if (std::optional<Error> error = CheckInside(placement, body)) return *error;
   if (std::optional<Error> error = CheckApart(placement, kNoIndex, started, body)) return *error;
+  if (std::optional<Error> error = CheckApartFromStatics(placement, body)) return *error;
   return accepted;
+}
+
+std::optional<Error> Admission::CheckStatic(const BodyDef& def, const std::string& body) const {
+  const std::string at = body + "a static body ";
+  if (core_.periodic) return Error{at + "cannot be in a periodic box (not supported)"};
+  if (!def.velocity.isZero(0.0)) return Error{at + "has no velocity (give zero)"};
+  if (!def.angular_velocity.isZero(0.0)) return Error{at + "has no angular_velocity (give zero)"};
+  if (!def.thrust.isZero(0.0) || !def.thrust_schedule.empty()) {
+    return Error{at + "has no thrust or thrust_schedule"};
+  }
+  if (!def.envelope.IsZero()) return Error{at + "has no envelope"};
+  return std::nullopt;
+}
+
+std::optional<Error> Admission::CheckApartFromStatics(const Placement& placement,
+                                                      const std::string& body) const {
+  const StaticBodies& statics = core_.bodies.statics;
+  if (statics.Empty()) return std::nullopt;
+  const Solid solid{placement.shape, placement.radius,
+                    Pose{placement.orientation, placement.position}};
+  const Aabb box = placement.shape != nullptr
+                       ? BoxOfPolyhedron(*placement.shape->polyhedron, solid.pose)
+                       : BoxOfSphere(placement.position, placement.radius);
+  std::optional<Error> error;
+  statics.tree().ForEachOverlapping(box, [&](std::uint32_t s) {
+    if (error) return;
+    const StaticBodies::Static& st = statics[s];
+    const BodyShape* shape = st.shape == kNoIndex ? nullptr : &core_.bodies.rigid.shapes()[st.shape];
+    const double gap = SolidGap(solid, Solid{shape, st.radius, st.pose});
+    const double allowed = core_.settings.contact_tolerance *
+                           (placement.radius + std::min(placement.radius, st.radius));
+    if (gap < -allowed) {
+      error = Error{body + "overlaps static body " + std::to_string(st.slot) + " by " +
+                    FormatExact(-gap) + " at t = " + FormatExact(core_.Now())};
+    }
+  });
+  return error;
 }
 
 Status Admission::CheckPose(std::uint32_t i, std::uint32_t slot, const Vec3& position,
@@ -81,6 +125,7 @@ Status Admission::CheckPose(std::uint32_t i, std::uint32_t slot, const Vec3& pos
   const Placement placement{position, orientation.normalized(), shape, bodies.materials.Radius(i)};
   if (std::optional<Error> error = CheckInside(placement, body)) return *error;
   if (std::optional<Error> error = CheckApart(placement, i, started, body)) return *error;
+  if (std::optional<Error> error = CheckApartFromStatics(placement, body)) return *error;
   return Status::Ok();
 }
 
@@ -178,7 +223,7 @@ std::optional<Error> Admission::CheckApart(const Placement& placement, std::uint
     if (found && slot >= *found) return;
     const BodyShape* shape_j = bodies.IsPolyhedron(j) ? &bodies.rigid.ShapeOf(j) : nullptr;
     if (placement.shape == nullptr && shape_j == nullptr) {
-      // Spheres: overlapping beyond round-off.
+      // Spheres: overlapping beyond round-off (a static sphere too).
       if (d.squaredNorm() < reach * reach * (1 - 1e-12)) {
         found = slot;
         spheres = true;
@@ -202,7 +247,9 @@ std::optional<Error> Admission::CheckApart(const Placement& placement, std::uint
       gap = FindClosestFeatureToPoint(*shape_j->tracked, Pose{q_j, p + d}, p).distance -
             placement.radius;
     }
-    if (gap <= core_.settings.contact_tolerance * reach) {
+    // Next to a static body, touching is allowed: the contact is its start.
+    const double limit = core_.settings.contact_tolerance * reach;
+    if (placement.is_static ? gap < -limit : gap <= limit) {
       found = slot;
       spheres = false;
       distance = gap;

@@ -54,7 +54,13 @@ class Admission {
     Eigen::Quaterniond orientation;
     const BodyShape* shape;
     double radius;
+    bool is_static = false;  // may touch other bodies (not overlap them)
   };
+  /// What a static body may not have (a motion of any kind, an envelope, a periodic box).
+  std::optional<Error> CheckStatic(const BodyDef& def, const std::string& body) const;
+  /// The static bodies `placement` overlaps (touching is allowed with a static).
+  std::optional<Error> CheckApartFromStatics(const Placement& placement,
+                                             const std::string& body) const;
   std::optional<Error> CheckInside(const Placement& placement, const std::string& body) const;
   std::optional<Error> CheckApart(const Placement& placement, std::uint32_t exclude, bool started,
                                   const std::string& body) const;

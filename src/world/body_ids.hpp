@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "sparsedyn/types.hpp"
+#include "world/static_bodies.hpp"
 
 namespace sparsedyn {
 
@@ -17,6 +18,20 @@ class BodyIds {
   /// The slot a new body, element `element`, takes: a freed one (the last freed first), else a
   /// new one.
   BodyId Add(std::uint32_t element) {
+    const BodyId id = TakeSlot(element);
+    if (element >= public_of_.size()) public_of_.resize(element + 1);
+    public_of_[element] = id.index;
+    return id;
+  }
+  /// The slot a new static body takes; it holds the static's key (StaticBodies::KeyOf).
+  BodyId AddStatic(std::uint32_t key) { return TakeSlot(key); }
+  /// Whether `slot` holds a static body (its InternalOf is then the static's key).
+  bool IsStaticSlot(std::uint32_t slot) const {
+    return StaticBodies::IsKey(slots_[slot].element) && slots_[slot].element != kNoIndex;
+  }
+
+ private:
+  BodyId TakeSlot(std::uint32_t body) {
     std::uint32_t slot;
     if (!free_.empty()) {
       slot = free_.back();
@@ -25,11 +40,11 @@ class BodyIds {
       slot = static_cast<std::uint32_t>(slots_.size());
       slots_.push_back(Slot{});
     }
-    slots_[slot].element = element;
-    if (element >= public_of_.size()) public_of_.resize(element + 1);
-    public_of_[element] = slot;
+    slots_[slot].element = body;
     return BodyId{slot, slots_[slot].generation};
   }
+
+ public:
   /// The body in `slot` is removed (its element goes away with Permute).
   void Remove(std::uint32_t slot) {
     slots_[slot].element = kNoIndex;
@@ -60,7 +75,9 @@ class BodyIds {
     std::vector<std::uint32_t> elements;
     elements.reserve(public_of_.size());
     for (const Slot& slot : slots_) {
-      if (slot.element != kNoIndex) elements.push_back(slot.element);
+      if (slot.element != kNoIndex && !StaticBodies::IsKey(slot.element)) {
+        elements.push_back(slot.element);
+      }
     }
     return elements;
   }

@@ -23,7 +23,8 @@ void BodyStore::Permute(const std::vector<std::uint32_t>& old_of_new) {
 
 std::size_t BodyStore::MemoryBytes() const {
   return paths.MemoryBytes() + materials.MemoryBytes() + rigid.MemoryBytes() +
-         envelopes.MemoryBytes() + thrusts.MemoryBytes() + ids.MemoryBytes();
+         envelopes.MemoryBytes() + thrusts.MemoryBytes() + ids.MemoryBytes() +
+         statics.MemoryBytes();
 }
 
 }  // namespace sparsedyn

@@ -15,6 +15,7 @@
 #include "world/body_materials.hpp"
 #include "world/element_paths.hpp"
 #include "world/rigid_bodies.hpp"
+#include "world/static_bodies.hpp"
 #include "world/thrust_schedules.hpp"
 
 namespace sparsedyn {
@@ -62,7 +63,9 @@ struct BodyStore {
   }
   /// Whether some pair of elements engages when they meet (Engages): else no engagement
   /// can exist, and the hot paths skip looking for one.
-  bool EngagesOnMeet() const { return envelopes.Any() || rigid.AnyPolyhedron(); }
+  bool EngagesOnMeet() const {
+    return envelopes.Any() || rigid.AnyPolyhedron() || !statics.Empty();
+  }
   /// Whether every element is a sphere without an envelope on a straight line, and nothing
   /// changes a path but collisions.
   bool AllOnStraightLines() const {
@@ -112,6 +115,7 @@ struct BodyStore {
   Envelopes envelopes;
   ThrustSchedules thrusts;
   BodyIds ids;
+  StaticBodies statics;  // not elements: no path, no queue entry
 };
 
 /// Reorders `values` so that new entry e is old entry old_of_new[e], with the exact capacity

@@ -31,6 +31,9 @@ Result<std::uint32_t> World::Impl::ElementOf(BodyId id, const char* call) const 
     return Error{std::string(call) + ": " + Handle(id) +
                  " is not in the World (removed, or never added)"};
   }
+  if (core_.bodies.ids.IsStaticSlot(id.index)) {
+    return Error{std::string(call) + ": " + Handle(id) + " is static (it never moves)"};
+  }
   return core_.bodies.ids.InternalOf(id.index);
 }
 
@@ -46,6 +49,14 @@ void World::Impl::AfterChange(std::uint32_t i) {
 }
 
 Status World::Impl::RemoveBody(BodyId id) {
+  if (core_.bodies.ids.Valid(id) && core_.bodies.ids.IsStaticSlot(id.index)) {
+    // A static: its engagements end with a restart (as a World built without it).
+    BodyIds& ids = core_.bodies.ids;
+    core_.bodies.statics.Remove(StaticBodies::IndexOf(ids.InternalOf(id.index)));
+    ids.Remove(id.index);
+    if (started_) Start();
+    return Status::Ok();
+  }
   Result<std::uint32_t> element = ElementOf(id, "RemoveBody");
   if (!element) return element.error();
   BodyStore& bodies = core_.bodies;

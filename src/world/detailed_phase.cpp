@@ -4,10 +4,12 @@
 #include "world/polyhedron_contacts.hpp"
 #include "world/sphere_contacts.hpp"
 #include "world/sphere_polyhedron_contacts.hpp"
+#include "world/static_contacts.hpp"
 
 namespace sparsedyn {
 
 PairKind DetailedPhase::KindOf(std::uint32_t a, std::uint32_t b) const {
+  if (StaticBodies::IsKey(b)) return PairKind::kStatic;
   const bool poly_a = core_.bodies.IsPolyhedron(a), poly_b = core_.bodies.IsPolyhedron(b);
   if (poly_a && poly_b) return PairKind::kPolyhedra;
   if (poly_a || poly_b) return PairKind::kSpherePolyhedron;
@@ -33,20 +35,36 @@ void DetailedPhase::Predict(std::uint32_t k) {
     case PairKind::kSpherePolyhedron:
       mixed_->PredictEngagement(k);
       break;
+    case PairKind::kStatic:
+      statics_->PredictEngagement(k);
+      break;
   }
 }
 
 void DetailedPhase::Handle(std::uint32_t k) {
   const Engagements::Engagement& e = engagements_[k];
+  // A checkpoint resumes the prediction, a separation ends the engagement, whatever the kind;
+  // a contact is the model's.
+  if (e.checkpoint) {
+    Predict(k);
+    return;
+  }
+  if (!e.contact_next) {
+    End(k);
+    return;
+  }
   switch (KindOf(e.a, e.b)) {
     case PairKind::kSpheres:
-      spheres_->HandleEngagement(k);
+      spheres_->HandleContact(k);
       break;
     case PairKind::kPolyhedra:
-      polyhedra_->HandleEngagement(k);
+      polyhedra_->HandleContact(k);
       break;
     case PairKind::kSpherePolyhedron:
-      mixed_->HandleEngagement(k);
+      mixed_->HandleContact(k);
+      break;
+    case PairKind::kStatic:
+      statics_->HandleContact(k);
       break;
   }
 }

@@ -14,12 +14,14 @@ namespace sparsedyn {
 class SphereContacts;
 class PolyhedronContacts;
 class SpherePolyhedronContacts;
+class StaticContacts;
 
 /// The kinds of engaged pairs, each watched by its own contact model.
 enum class PairKind : std::uint8_t {
   kSpheres,     // two spheres with envelopes (the bodies are the element spheres themselves)
   kPolyhedra,   // two convex polyhedra: closest-feature tracking (§5.2)
   kSpherePolyhedron,  // a sphere and a convex polyhedron: the feature closest to the centre
+  kStatic,      // a moving body and a static one (b is the static's key)
 };
 
 /// The detailed phase (§3.3, §5.2): the engaged pairs, each with one slot in the engagement
@@ -30,10 +32,11 @@ class DetailedPhase {
  public:
   DetailedPhase(WorldCore& core, SparsePhase& sparse) : core_(core), sparse_(sparse) {}
   void SetModels(SphereContacts* spheres, PolyhedronContacts* polyhedra,
-                 SpherePolyhedronContacts* mixed) {
+                 SpherePolyhedronContacts* mixed, StaticContacts* statics) {
     spheres_ = spheres;
     polyhedra_ = polyhedra;
     mixed_ = mixed;
+    statics_ = statics;
   }
 
   PairKind KindOf(std::uint32_t a, std::uint32_t b) const;
@@ -72,6 +75,7 @@ class DetailedPhase {
   SphereContacts* spheres_ = nullptr;
   PolyhedronContacts* polyhedra_ = nullptr;
   SpherePolyhedronContacts* mixed_ = nullptr;
+  StaticContacts* statics_ = nullptr;
   Engagements engagements_;
   CalendarQueue queue_;  // one slot per engagement
 };

@@ -72,8 +72,10 @@ void World::Impl::Dispatch(const QueueTop& top, bool engagement) {
     case EventKind::kBodyTimer:
       HandleThrustChange(top.slot);
       break;
-    case EventKind::kEngagement:
     case EventKind::kStaticMeet:
+      HandleStaticMeet(top.slot);
+      break;
+    case EventKind::kEngagement:
     case EventKind::kNone:
       SPARSEDYN_ASSERT(false, "element queue holds an event of the wrong kind");
   }
@@ -109,6 +111,13 @@ void World::Impl::HandleMeeting(std::uint32_t i) {
     return;
   }
   spheres_.Collide(i, j, normal, gap);
+}
+
+void World::Impl::HandleStaticMeet(std::uint32_t i) {
+  const std::uint32_t s = sparse_.PredictionOf(i).target;
+  ++core_.observers.stats().meetings;
+  if (core_.bodies.statics.Alive(s)) detailed_.Engage(i, StaticBodies::KeyOf(s));
+  sparse_.PredictFull(i);  // the next static it reaches, or its next meeting
 }
 
 Status World::Impl::CheckProgress(const QueueTop& top, bool engagement,

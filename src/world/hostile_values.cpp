@@ -78,8 +78,9 @@ Status CheckClockResolution(const World& world, double t) {
   // collisions only pass energy around), plus what its acceleration adds over the run (in a
   // walled box at most the energy of falling across the box's diagonal).
   double energy = 0, min_mass = kMaxMagnitude, min_radius = kMaxMagnitude, max_acceleration = 0;
-  for (std::size_t i = 0; i < world.BodyCount(); ++i) {
-    const BodyState s = world.StateAt(world.IdOf(static_cast<std::uint32_t>(i)), world.Time());
+  for (const BodyId id : world.Bodies()) {
+    const BodyState s = world.StateAt(id, world.Time());
+    if (!std::isfinite(s.mass)) continue;  // a static body never moves
     energy += 0.5 * s.mass * s.velocity.squaredNorm();
     min_mass = std::min(min_mass, s.mass);
     min_radius = std::min(min_radius, s.radius);

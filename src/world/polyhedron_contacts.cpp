@@ -74,16 +74,8 @@ void PolyhedronContacts::PredictEngagement(std::uint32_t k) {
   detailed_.Schedule(k, time);
 }
 
-void PolyhedronContacts::HandleEngagement(std::uint32_t k) {
+void PolyhedronContacts::HandleContact(std::uint32_t k) {
   Engagements::Engagement& e = detailed_.engagements()[k];
-  if (e.checkpoint) {
-    PredictEngagement(k);
-    return;
-  }
-  if (!e.contact_next) {
-    detailed_.End(k);
-    return;
-  }
   Statistics& stats = core_.observers.stats();
   const Vec3 shift = PairShift(core_, e.a, e.b);
   ClosestFeatures features;

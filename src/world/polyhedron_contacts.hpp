@@ -23,7 +23,8 @@ class PolyhedronContacts {
       : core_(core), sparse_(sparse), detailed_(detailed), changes_(changes) {}
 
   void PredictEngagement(std::uint32_t k);
-  void HandleEngagement(std::uint32_t k);
+  /// Engagement k's contact event (DetailedPhase::Handle takes checkpoints and ends).
+  void HandleContact(std::uint32_t k);
 
   /// The closest features of a and b's image at `shift` now.
   ClosestFeatures PairFeatures(std::uint32_t a, std::uint32_t b, const Vec3& shift,

@@ -9,7 +9,8 @@
 namespace sparsedyn {
 
 SparsePhase::SparsePhase(WorldCore& core, const Engagements& engagements)
-    : core_(core), scan_(core, queue_, engagements, grid_, all_pairs_) {}
+    : core_(core), engagements_(engagements),
+      scan_(core, queue_, engagements, grid_, all_pairs_) {}
 
 void SparsePhase::Build(double max_radius) {
   const BodyStore& bodies = core_.bodies;
@@ -56,7 +57,7 @@ void SparsePhase::Build(double max_radius) {
   // collisions per CPU s, at 10^5 +14%, at 6x10^4 about +10%; at 3x10^4 -5% and at 10^4 -7%,
   // where the data are at hand anyway (docs/lab/measurements.md#eleventh-measurement).
   fetch_ahead_ = straight_lines && grid_ && n >= kFetchAheadMinElements;
-  linear_finish_ = straight_lines && grid_ && !core_.Walled();
+  linear_finish_ = straight_lines && grid_ && !core_.Walled() && bodies.statics.Empty();
 }
 
 void SparsePhase::AddElement(std::uint32_t i) {
@@ -121,6 +122,19 @@ double SparsePhase::WrapTime(std::uint32_t i) const {
   const double dt = all_pairs_->PredictCrossing(core_.bodies.BodyMoverOf(i, t0), 0,
                                                 core_.Now() - t0, axis, direction);
   return MaxOf(core_.Now(), EventTime(t0, dt));
+}
+
+Event SparsePhase::PredictStaticEntry(std::uint32_t i, const Event& event) {
+  const double now = core_.Now();
+  const StaticBodies& statics = core_.bodies.statics;
+  const StaticTree::Entry entry = statics.tree().FirstEntry(
+      core_.bodies.MoverOf(i, now), event.time - now,
+      [&](std::uint32_t s) { return engagements_.Engaged(i, StaticBodies::KeyOf(s)); });
+  if (entry.index == kNoIndex) return event;
+  const double time = MaxOf(now, EventTime(now, entry.dt));
+  if (!(time < event.time)) return event;
+  PredictionOf(i).target = entry.index;
+  return Event{time, EventKind::kStaticMeet, 0, entry.index, 0};
 }
 
 }  // namespace sparsedyn

@@ -76,6 +76,9 @@ class SparsePhase {
   template <typename Scan>
   void PredictWith(std::uint32_t i, Candidate best, const Grid::Place* place, Scan&& scan);
   Event FinishPrediction(std::uint32_t i, const Candidate& best);
+  /// `event`, or i's entry into a static body's box if that comes first (kStaticMeet, the
+  /// static's index kept as the prediction's target).
+  Event PredictStaticEntry(std::uint32_t i, const Event& event);
   struct Crossing {  // an element's next cell crossing: when, and across which face
     double time;
     int axis;
@@ -88,6 +91,7 @@ class SparsePhase {
   double WrapTime(std::uint32_t i) const;  // AllPairs: i's next wrap in a periodic box
 
   WorldCore& core_;
+  const Engagements& engagements_;
   WallContacts* walls_ = nullptr;
   ElementQueue queue_;  // one slot per element, with its prediction
   std::optional<Grid> grid_;

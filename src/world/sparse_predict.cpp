@@ -105,6 +105,7 @@ Event SparsePhase::FinishPrediction(std::uint32_t i, const Candidate& best) {
     event = Event{crossing_time, EventKind::kCellCrossing,
                   static_cast<std::uint8_t>(axis * 2 + (direction > 0 ? 1 : 0)), kNoIndex, 0};
   }
+  if (!core_.bodies.statics.Empty()) event = PredictStaticEntry(i, event);
   // The walls are the detailed phase's business for a polyhedron, and only up to the element's
   // next event (after which it predicts again).
   if (polyhedra && core_.Walled()) event = walls_->PredictPolyhedron(i, event);

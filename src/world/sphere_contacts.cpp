@@ -125,12 +125,8 @@ void SphereContacts::PredictEngagement(std::uint32_t k) {
   detailed_.Schedule(k, EventTime(now, std::min(contact, separation)));
 }
 
-void SphereContacts::HandleEngagement(std::uint32_t k) {
+void SphereContacts::HandleContact(std::uint32_t k) {
   const Engagements::Engagement e = detailed_.engagements()[k];
-  if (!e.contact_next) {
-    detailed_.End(k);
-    return;
-  }
   Vec3 normal;
   double gap = 0;
   if (TouchingAndApproaching(e.a, e.b, normal, gap)) {

@@ -27,7 +27,8 @@ class SphereContacts {
   void Collide(std::uint32_t i, std::uint32_t j, const Vec3& normal, double gap);
   /// Engagement k of two spheres: their contact, or the separation of their elements.
   void PredictEngagement(std::uint32_t k);
-  void HandleEngagement(std::uint32_t k);
+  /// Engagement k's contact event (DetailedPhase::Handle takes checkpoints and ends).
+  void HandleContact(std::uint32_t k);
 
  private:
   /// Collide() for spheres that rub (both have friction): with their spins.

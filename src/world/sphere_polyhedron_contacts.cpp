@@ -78,16 +78,8 @@ void SpherePolyhedronContacts::PredictEngagement(std::uint32_t k) {
   detailed_.Schedule(k, time);
 }
 
-void SpherePolyhedronContacts::HandleEngagement(std::uint32_t k) {
+void SpherePolyhedronContacts::HandleContact(std::uint32_t k) {
   Engagements::Engagement& e = detailed_.engagements()[k];
-  if (e.checkpoint) {
-    PredictEngagement(k);
-    return;
-  }
-  if (!e.contact_next) {
-    detailed_.End(k);
-    return;
-  }
   Statistics& stats = core_.observers.stats();
   const Pair pair = PairOf(k);
   PointClosest closest;

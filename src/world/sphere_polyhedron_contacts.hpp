@@ -23,7 +23,8 @@ class SpherePolyhedronContacts {
       : core_(core), sparse_(sparse), detailed_(detailed), changes_(changes) {}
 
   void PredictEngagement(std::uint32_t k);
-  void HandleEngagement(std::uint32_t k);
+  /// Engagement k's contact event (DetailedPhase::Handle takes checkpoints and ends).
+  void HandleContact(std::uint32_t k);
 
   /// The closest feature of polyhedron p to sphere s's centre (its image nearest to p) now.
   PointClosest Closest(std::uint32_t p, std::uint32_t s, std::optional<FeatureId> warm) const;

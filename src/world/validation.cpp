@@ -54,6 +54,24 @@ double World::Impl::WallGapNow(std::uint32_t i, int wall) const {
          plane.offset;
 }
 
+std::optional<Error> World::Impl::CheckAgainstStatics(std::uint32_t i) const {
+  const BodyStore& bodies = core_.bodies;
+  if (bodies.statics.Empty()) return std::nullopt;
+  const double now = core_.Now();
+  const Aabb box = BoxOfSphere(bodies.paths.PathOf(i).PositionAt(now), bodies.materials.Radius(i));
+  std::optional<Error> error;
+  bodies.statics.tree().ForEachOverlapping(box, [&](std::uint32_t s) {
+    if (error) return;
+    const double gap = statics_.TouchNow(i, s, std::nullopt).contact.distance;
+    if (gap < -statics_.Tolerance(i, s)) {
+      error = Error{"body " + std::to_string(bodies.ids.PublicOf(i)) + " and static body " +
+                    std::to_string(bodies.statics[s].slot) + " interpenetrate by " +
+                    FormatExact(-gap) + " at t = " + FormatExact(now)};
+    }
+  });
+  return error;
+}
+
 Status World::Impl::Validate() const {
   const BodyStore& bodies = core_.bodies;
   const auto n = bodies.Size();
@@ -87,6 +105,7 @@ Status World::Impl::Validate() const {
         if (std::optional<Error> error = check_pair(i, j)) return *error;
       }
     }
+    if (std::optional<Error> error = CheckAgainstStatics(i)) return *error;
     if (!core_.Walled()) continue;
     for (int w = 0; w < 6; ++w) {
       const double gap = WallGapNow(i, w);

@@ -19,13 +19,14 @@ World::Impl::Impl(const WorldSettings& settings)
       spheres_(core_, sparse_, detailed_, changes_),
       polyhedra_(core_, sparse_, detailed_, changes_),
       mixed_(core_, sparse_, detailed_, changes_),
+      statics_(core_, sparse_, detailed_, changes_),
       walls_(core_, sparse_, detailed_, changes_),
       memory_(core_, sparse_, detailed_),
       look_ahead_(core_.bodies.paths, sparse_),
       admission_(core_) {
   core_.bodies.paths.SetNow(settings.start_time);
   sparse_.SetWalls(&walls_);
-  detailed_.SetModels(&spheres_, &polyhedra_, &mixed_);
+  detailed_.SetModels(&spheres_, &polyhedra_, &mixed_, &statics_);
 }
 
 Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
@@ -35,6 +36,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   if (!accepted) return accepted.error();
 
   // Accepted: from here on nothing can fail.
+  if (def.is_static) return AddStatic(def, *accepted);
   const double radius = accepted->radius;
   const double now = core_.Now();
   // Rotation is tracked from the first body whose rotation matters: a polyhedron, or a sphere
@@ -75,8 +77,43 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   return id;
 }
 
+BodyId World::Impl::AddStatic(const BodyDef& def, const Admission::Accepted& accepted) {
+  BodyStore& bodies = core_.bodies;
+  // A moving body's spin matters against a static (friction, an off-centre push).
+  bodies.rigid.Track(bodies.Size());
+  StaticBodies::Static body;
+  body.radius = accepted.radius;
+  body.restitution = def.restitution;
+  body.friction = def.friction;
+  body.pose.translation = def.position;
+  Aabb box = BoxOfSphere(def.position, accepted.radius);
+  if (def.shape != nullptr) {
+    body.shape = accepted.new_shape ? bodies.rigid.shapes().Insert(*accepted.new_shape)
+                                    : accepted.shape;
+    body.pose.rotation = def.orientation.normalized();
+    box = BoxOfPolyhedron(*bodies.rigid.shapes()[body.shape].polyhedron, body.pose);
+  }
+  const BodyId id = bodies.ids.AddStatic(StaticBodies::KeyOf(bodies.statics.NextIndex()));
+  body.slot = id.index;
+  bodies.statics.Add(body, box);
+  // Every element may reach it: all predict again (as a World built with it would).
+  if (started_) Start();
+  return id;
+}
+
+BodyState World::Impl::StaticStateAt(std::uint32_t s) const {
+  const StaticBodies::Static& body = core_.bodies.statics[s];
+  BodyState state;
+  state.position = body.pose.translation;
+  state.radius = body.radius;
+  state.mass = kInfinity;
+  state.orientation = body.pose.rotation;
+  return state;
+}
+
 void World::Impl::Start() {
   started_ = true;
+  core_.bodies.statics.tree().Build();
   admission_.Clear();
   BodyStore& bodies = core_.bodies;
   const auto n = bodies.Size();
@@ -203,10 +240,14 @@ Status World::SetThrust(BodyId id, const Vec3& thrust, const std::vector<ThrustC
 }
 BodyState World::StateAt(BodyId id, double t) const {
   SPARSEDYN_ASSERT(IsValid(id), "StateAt: invalid BodyId");
-  return impl_->StateAt(impl_->core_.bodies.ids.InternalOf(id.index), t);
+  const std::uint32_t internal = impl_->core_.bodies.ids.InternalOf(id.index);
+  if (StaticBodies::IsKey(internal)) return impl_->StaticStateAt(StaticBodies::IndexOf(internal));
+  return impl_->StateAt(internal, t);
 }
 double World::Time() const { return impl_->core_.Now(); }
-std::size_t World::BodyCount() const { return impl_->core_.bodies.Size(); }
+std::size_t World::BodyCount() const {
+  return impl_->core_.bodies.Size() + impl_->core_.bodies.statics.Count();
+}
 bool World::IsValid(BodyId id) const { return impl_->core_.bodies.ids.Valid(id); }
 BodyId World::IdOf(std::uint32_t index) const { return impl_->core_.bodies.ids.IdOfSlot(index); }
 std::size_t World::SlotCount() const { return impl_->core_.bodies.ids.SlotCount(); }

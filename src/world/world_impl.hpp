@@ -13,6 +13,7 @@
 #include "world/sparse_phase.hpp"
 #include "world/sphere_contacts.hpp"
 #include "world/sphere_polyhedron_contacts.hpp"
+#include "world/static_contacts.hpp"
 #include "world/wall_contacts.hpp"
 #include "world/world_core.hpp"
 
@@ -38,6 +39,8 @@ class World::Impl {
   Status Validate() const;
   /// The signed gap of bodies i and j now by their kinds (negative: overlap), m.
   double GapNow(std::uint32_t i, std::uint32_t j) const;
+  /// Element i against the static bodies whose boxes its sphere overlaps (Validate).
+  std::optional<Error> CheckAgainstStatics(std::uint32_t i) const;
   /// The signed gap of body i and wall `wall` (BoxWall's numbering) now, m.
   double WallGapNow(std::uint32_t i, int wall) const;
 
@@ -68,6 +71,12 @@ class World::Impl {
   void AfterChange(std::uint32_t i);
   /// Element i's meeting: target-absent, an engagement, or the collision of two spheres.
   void HandleMeeting(std::uint32_t i);
+  /// Element i reaches a static body's box: engaged with it.
+  void HandleStaticMeet(std::uint32_t i);
+  /// AddBody of a static body (accepted).
+  BodyId AddStatic(const BodyDef& def, const Admission::Accepted& accepted);
+  /// The state of static s (at rest where it stands).
+  BodyState StaticStateAt(std::uint32_t s) const;
   // The event loop's progress over windows of stall_event_limit events: a clock that stands
   // still (a stall) or crawls on collisions slower than the collapse guard ends AdvanceTo with
   // an error, never a hang.
@@ -84,6 +93,7 @@ class World::Impl {
   SphereContacts spheres_;
   PolyhedronContacts polyhedra_;
   SpherePolyhedronContacts mixed_;
+  StaticContacts statics_;
   WallContacts walls_;
   MemoryOrder memory_;
   LookAhead look_ahead_;

@@ -62,7 +62,7 @@ TEST(SceneFileErrors, UnknownKeysNameTheirPathAndTheAllowedKeys) {
             "tolerances, bodies)");
   EXPECT_EQ(ErrorOf(OneBody(std::string(kSphere) + R"(, "velocty": [1, 0, 0])")),
             "s.json: bodies[0].velocty: unknown key (allowed here: shape, position, orientation, "
-            "velocity, angular_velocity, thrust, mass, density, restitution, friction)");
+            "velocity, angular_velocity, thrust, mass, density, restitution, friction, static)");
   EXPECT_EQ(ErrorOf(OneBody(R"("shape": {"sphere": {"radius": 1, "r": 2}})")),
             "s.json: bodies[0].shape.sphere.r: unknown key (allowed here: radius)");
 }
@@ -191,6 +191,25 @@ TEST(SceneFileWorld, OverlapAndOutsideTheContainerNameTheBody) {
   world = BuildWorld(*outside);
   ASSERT_FALSE(world.ok());
   EXPECT_EQ(world.error().message.rfind("bodies[0]: ", 0), 0u) << world.error().message;
+}
+
+TEST(SceneFileWorld, StaticBodiesAreBuiltFixedAndWrittenBack) {
+  Result<SceneDescription> scene = ParseScene(
+      R"({"gravity": [0, 0, -9.81], "bodies": [)"
+      R"({"shape": {"generator": "box", "half_extents": [10, 10, 0.5]}, "position": [0, 0, -0.5],)"
+      R"( "static": true}, {)" + std::string(kSphere) + R"(, "position": [0, 0, 2]}]})",
+      "s.json", kDataDir);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  EXPECT_TRUE(scene->bodies[0].is_static);
+  EXPECT_FALSE(scene->bodies[1].is_static);
+  Result<World> world = BuildWorld(*scene);
+  ASSERT_TRUE(world.ok()) << world.error().message;
+  ASSERT_TRUE(world->AdvanceTo(1.0));  // the sphere lands at t = sqrt(3 / 9.81) and bounces
+  EXPECT_EQ(world->Stats().static_collisions, 1u);
+  EXPECT_EQ(world->StateAt(world->IdOf(0), 1.0).position, Vec3(0, 0, -0.5));
+  EXPECT_NE(FormatScene(*scene).find("\"static\":true"), std::string::npos) << FormatScene(*scene);
+  EXPECT_EQ(ErrorOf(OneBody(std::string(kSphere) + R"(, "static": 1)")),
+            "s.json: bodies[0].static: must be true or false");
 }
 
 TEST(SceneFileWorld, PolyhedraAreBuiltAlsoAmongSpheres) {

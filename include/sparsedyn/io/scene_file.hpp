@@ -51,6 +51,7 @@ struct SceneBody {
   std::optional<double> density;  ///< kg/m^3 when the file gave a density
   double restitution = 1.0;       ///< in [0, 1]
   double friction = 0.0;          ///< Coulomb coefficient >= 0 (polyhedra)
+  bool is_static = false;         ///< "static": fixed in place, infinite mass (BodyDef)
 };
 
 /// A scene as a file describes it: the World's settings, shapes, bodies and how long to run.

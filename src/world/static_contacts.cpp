@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: MIT
+#include "world/static_contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/sphere_polyhedron_contact.hpp"
+#include "math/event_time.hpp"
+#include "narrow/point_features.hpp"
+#include "narrow/sphere_contact.hpp"
+#include "narrow/time_of_contact.hpp"
+#include "sparse/meeting.hpp"
+#include "world/contact_band.hpp"
+#include "world/phase_timer.hpp"
+
+namespace sparsedyn {
+
+double StaticContacts::Tolerance(std::uint32_t i, std::uint32_t s) const {
+  const double r = core_.bodies.materials.Radius(i);
+  return core_.settings.contact_tolerance * (r + std::min(r, core_.bodies.statics[s].radius));
+}
+
+double StaticContacts::ExitTime(std::uint32_t i, std::uint32_t s) const {
+  // The tree's entry is never late, so at the engagement's start the sphere may still be a
+  // rounding error short of the box: the exit is that of a sphere a little larger (never
+  // earlier than the true one), else the engagement would end at once and start again.
+  const double now = core_.Now();
+  Mover mover = core_.bodies.MoverOf(i, now);
+  mover.r0 += 1e-9 * (mover.r0 + mover.p.cwiseAbs().maxCoeff());
+  return EventTime(now, core_.bodies.statics.tree().Exit(mover, s));
+}
+
+RigidPath StaticContacts::PathOfStatic(std::uint32_t s) const {
+  const StaticBodies::Static& body = core_.bodies.statics[s];
+  return RigidPath{Path{body.pose.translation, Vec3::Zero(), Vec3::Zero(), core_.Now()},
+                   body.pose.rotation, Vec3::Zero()};
+}
+
+StaticContacts::Touch StaticContacts::TouchNow(std::uint32_t i, std::uint32_t s,
+                                               std::optional<FeaturePair> warm) const {
+  const BodyStore& bodies = core_.bodies;
+  const StaticBodies::Static& st = bodies.statics[s];
+  const double now = core_.Now();
+  const bool moving_polyhedron = bodies.IsPolyhedron(i);
+  const bool static_polyhedron = st.shape != kNoIndex;
+  const Pose pose_i = bodies.RigidPathOf(i).PoseAt(now);
+  Touch touch;
+  if (moving_polyhedron && static_polyhedron) {
+    const BodyShape& shape_i = bodies.rigid.ShapeOf(i);
+    const BodyShape& shape_s = bodies.rigid.shapes()[st.shape];
+    const ClosestFeatures features =
+        FindClosestFeatures(*shape_i.tracked, pose_i, *shape_s.tracked, st.pose, warm);
+    touch.features = features.features;
+    touch.contact = ContactFromFeatures(*shape_i.polyhedron, pose_i, *shape_s.polyhedron,
+                                        st.pose, features, Tolerance(i, s));
+    return touch;
+  }
+  if (moving_polyhedron || static_polyhedron) {
+    // The polyhedron is body A: the normal points from it to the sphere's centre.
+    const BodyShape& shape = moving_polyhedron ? bodies.rigid.ShapeOf(i)
+                                               : bodies.rigid.shapes()[st.shape];
+    const Pose& pose = moving_polyhedron ? pose_i : st.pose;
+    const Vec3 centre = moving_polyhedron ? st.pose.translation : pose_i.translation;
+    const double radius = moving_polyhedron ? st.radius : bodies.materials.Radius(i);
+    const std::optional<FeatureId> start = warm ? std::optional<FeatureId>(warm->a) : std::nullopt;
+    const PointClosest closest = FindClosestFeatureToPoint(*shape.tracked, pose, centre, start);
+    touch.features.a = closest.feature;
+    touch.contact = SphereContactGeometry(closest, radius);
+    touch.static_is_a = static_polyhedron;
+    return touch;
+  }
+  // Two spheres: the static is body A.
+  const Vec3 d = pose_i.translation - st.pose.translation;
+  const double distance = d.norm();
+  touch.static_is_a = true;
+  touch.contact.normal = d / distance;
+  touch.contact.distance = distance - st.radius - bodies.materials.Radius(i);
+  touch.contact.points = {st.pose.translation +
+                          (st.radius + 0.5 * touch.contact.distance) * touch.contact.normal};
+  return touch;
+}
+
+void StaticContacts::PredictEngagement(std::uint32_t k) {
+  Statistics& stats = core_.observers.stats();
+  const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_detailed);
+  const BodyStore& bodies = core_.bodies;
+  const double now = core_.Now();
+  Engagements::Engagement& e = detailed_.engagements()[k];
+  const std::uint32_t i = e.a, s = StaticBodies::IndexOf(e.b);
+  const StaticBodies::Static& st = bodies.statics[s];
+  // The engagement lasts while the element's sphere is within the static's (inflated) box.
+  const double exit = ExitTime(i, s);
+  const double tolerance = Tolerance(i, s);
+  const std::optional<FeaturePair> warm =
+      e.has_features ? std::optional<FeaturePair>(e.features) : std::nullopt;
+  const Touch touch = TouchNow(i, s, warm);
+  e.features = touch.features;
+  e.has_features = true;
+  e.contact_next = false;
+  e.checkpoint = false;
+  double time = exit;
+  if (touch.contact.distance <= tolerance) {
+    e.contact_next = true;  // touching now: the handler decides whether any point approaches
+    detailed_.Schedule(k, now);
+    return;
+  }
+  ++stats.detail_predictions;
+  ContactPredictionOptions options;
+  options.tolerance = tolerance;
+  options.max_iterations = kIterationsPerPrediction;
+  const RigidPath path_i = bodies.RigidPathOf(i);
+  const bool moving_polyhedron = bodies.IsPolyhedron(i), static_polyhedron = st.shape != kNoIndex;
+  ContactPrediction::Kind kind = ContactPrediction::Kind::kNone;
+  double found = kInfinity;
+  int iterations = 0;
+  if (moving_polyhedron && static_polyhedron) {
+    options.spin_radius_a = bodies.rigid.SpinRadius(i);
+    options.spin_radius_b = 0.0;
+    const ContactPrediction p =
+        PredictContact(*bodies.rigid.ShapeOf(i).tracked, path_i,
+                       *bodies.rigid.shapes()[st.shape].tracked, PathOfStatic(s), now, exit,
+                       e.features, options);
+    kind = p.kind;
+    found = p.time;
+    iterations = p.iterations;
+    if (kind != ContactPrediction::Kind::kNone) e.features = p.features.features;
+  } else if (moving_polyhedron || static_polyhedron) {
+    const TrackedPolyhedron& polyhedron = moving_polyhedron
+                                              ? *bodies.rigid.ShapeOf(i).tracked
+                                              : *bodies.rigid.shapes()[st.shape].tracked;
+    const RigidPath path = moving_polyhedron ? path_i : PathOfStatic(s);
+    const Path centre = moving_polyhedron ? PathOfStatic(s).centre : path_i.centre;
+    const double radius = moving_polyhedron ? st.radius : bodies.materials.Radius(i);
+    options.spin_radius_a = moving_polyhedron ? bodies.rigid.SpinRadius(i) : 0.0;
+    const SphereContactPrediction p = PredictSphereContact(polyhedron, path, centre, radius, now,
+                                                           exit, e.features.a, options);
+    kind = p.kind;
+    found = p.time;
+    iterations = p.iterations;
+    if (kind != ContactPrediction::Kind::kNone) e.features.a = p.closest.feature;
+  } else {
+    const Mover fixed{st.pose.translation, Vec3::Zero(), Vec3::Zero(), st.radius, 0.0, 0.0};
+    found = EventTime(now, PredictMeeting(bodies.BodyMoverOf(i, now), fixed, Vec3::Zero()));
+    if (found <= exit) kind = ContactPrediction::Kind::kContact;
+  }
+  stats.detail_iterations += static_cast<std::uint64_t>(iterations);
+  if (kind != ContactPrediction::Kind::kNone && found <= exit) {
+    e.contact_next = kind == ContactPrediction::Kind::kContact;
+    e.checkpoint = !e.contact_next;
+    if (e.checkpoint) ++stats.detail_checkpoints;
+    time = std::max(now, found);
+  }
+  detailed_.Schedule(k, time);
+}
+
+void StaticContacts::HandleContact(std::uint32_t k) {
+  Engagements::Engagement& e = detailed_.engagements()[k];
+  Statistics& stats = core_.observers.stats();
+  const std::uint32_t i = e.a, s = StaticBodies::IndexOf(e.b);
+  Touch touch;
+  {
+    const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_detailed);
+    touch = TouchNow(i, s, e.features);
+  }
+  e.features = touch.features;
+  const double tolerance = Tolerance(i, s);
+  if (touch.contact.distance > tolerance) {
+    ++stats.early_events;
+    PredictEngagement(k);
+    return;
+  }
+  if (Collide(i, s, touch)) return;
+  // Touching, but no point approaches: look again once the band could have been closed.
+  const BodyStore& bodies = core_.bodies;
+  const double now = core_.Now();
+  const Path& path = bodies.paths.PathOf(i);
+  const double speed =
+      path.VelocityAt(now).norm() + bodies.rigid.SpinRadius(i) * bodies.rigid.Omega(i).norm();
+  const double exit = ExitTime(i, s);
+  const double again = BandExit(now, tolerance, speed, path.a.norm());
+  e.contact_next = false;
+  e.checkpoint = again < exit;
+  detailed_.Schedule(k, std::min(again, exit));
+}
+
+bool StaticContacts::Collide(std::uint32_t i, std::uint32_t s, const Touch& touch) {
+  const BodyStore& bodies = core_.bodies;
+  Statistics& stats = core_.observers.stats();
+  const double now = core_.Now();
+  const StaticBodies::Static& st = bodies.statics[s];
+  RigidImpulseResult result;
+  {
+    const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
+    const Pose pose_i = bodies.RigidPathOf(i).PoseAt(now);
+    RigidBodyState moving{pose_i.translation, bodies.paths.VelocityNow(i), bodies.rigid.Omega(i),
+                          bodies.materials.InvMass(i),
+                          bodies.InvInertiaWorld(i, pose_i.rotation)};
+    RigidBodyState fixed{st.pose.translation, Vec3::Zero(), Vec3::Zero(), 0.0,
+                         Eigen::Matrix3d::Zero()};
+    RigidImpulseOptions options;
+    options.restitution = bodies.materials.Restitution(i) * st.restitution;
+    options.friction = std::sqrt(bodies.materials.Friction(i) * st.friction);
+    options.elastic_below_speed = core_.settings.elastic_below_speed;
+    result = touch.static_is_a ? ApplyRigidImpulse(fixed, moving, touch.contact, options)
+                               : ApplyRigidImpulse(moving, fixed, touch.contact, options);
+    if (result.rounds == 0) return false;
+    // A collision ends a wall's hold (the wall takes it up again if the body still rests).
+    if (bodies.paths.accelerations().HeldBy(i) != 0) changes_.SetHeld(i, 0, moving.velocity);
+    changes_.SetMotion(i, moving.velocity, moving.angular_velocity);
+  }
+  core_.observers.NotePenetration(touch.contact.distance);
+  ++stats.collisions;
+  ++stats.static_collisions;
+  if (result.guarded) ++stats.collapse_guarded;
+  if (core_.observers.WantsCollisions()) {
+    const BodyId moving_id = bodies.ids.IdOf(i), static_id = bodies.ids.IdOfSlot(st.slot);
+    core_.observers.Collision(CollisionEvent{now, touch.static_is_a ? static_id : moving_id,
+                                             touch.static_is_a ? moving_id : static_id, -1,
+                                             result.point, touch.contact.normal,
+                                             result.normal_impulse});
+  }
+  if (sparse_.PredictionOf(i).kind != EventKind::kNone) ++stats.stale_actor_absent;
+  sparse_.PredictFull(i);
+  detailed_.PredictEngagementsOf(i);  // this one with s too: i's path changed
+  return true;
+}
+
+}  // namespace sparsedyn
