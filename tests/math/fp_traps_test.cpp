@@ -23,9 +23,26 @@ TEST(FloatingPointTraps, AreOnInEveryTestBinary) {
 
 TEST(FloatingPointTraps, AnInvalidOperationStopsTheTest) {
   if (!EnableFloatingPointTraps()) GTEST_SKIP() << "this CPU cannot trap (feenableexcept fails)";
+  volatile double inf = std::numeric_limits<double>::infinity();
+  EXPECT_DEATH({ [[maybe_unused]] volatile double difference = inf - inf; }, "");
+  volatile double zero = 0.0;
+  EXPECT_DEATH({ [[maybe_unused]] volatile double ratio = zero / zero; }, "");
+}
+
+// An ordered comparison with a quiet NaN is invalid in IEEE 754, but whether it raises the flag
+// is the compiler's choice of instruction on x86-64: GCC 12 emits comisd (signalling: it
+// traps), clang 14 ucomisd (quiet: it does not, unless -ffp-exception-behavior=strict). So
+// under clang the traps do not see NaN comparisons (docs/reliability.md).
+TEST(FloatingPointTraps, AComparisonWithNanTrapsWithGcc) {
+  if (!EnableFloatingPointTraps()) GTEST_SKIP() << "this CPU cannot trap (feenableexcept fails)";
   volatile double nan = std::numeric_limits<double>::quiet_NaN();
   volatile double one = 1.0;
+#if defined(__clang__)
+  volatile bool less = nan < one;  // quiet: no trap, and false
+  EXPECT_FALSE(less);
+#else
   EXPECT_DEATH({ [[maybe_unused]] volatile bool less = nan < one; }, "");
+#endif
 }
 
 TEST(FloatingPointTraps, PausedForAScopeAndBackAfter) {

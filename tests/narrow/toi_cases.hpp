@@ -93,9 +93,8 @@ class MotionCaseGenerator {
     c.path_b.centre.p0 = c.path_a.centre.PositionAt(c.t_begin) + distance * u -
                          (c.t_begin - t0) * c.path_b.centre.v0;
     if (accelerate && Uniform() < 0.5) {
-      c.path_a.centre.a = pairs_.RandomUnit() * Uniform();
-      c.path_b.centre.a =
-          Uniform() < 0.3 ? c.path_a.centre.a : Vec3(pairs_.RandomUnit() * 2.0 * Uniform());
+      c.path_a.centre.a = RandomVector(1.0);
+      c.path_b.centre.a = Uniform() < 0.3 ? c.path_a.centre.a : RandomVector(2.0);
       c.path_b.centre.p0 -= 0.5 * (c.t_begin - t0) * (c.t_begin - t0) * c.path_b.centre.a -
                             0.5 * (c.t_begin - t0) * (c.t_begin - t0) * c.path_a.centre.a;
     }
@@ -122,9 +121,9 @@ class MotionCaseGenerator {
     auto grid = [&] {
       return 0.25 * static_cast<double>(static_cast<int>(pairs_.rng()() % 9) - 4);
     };
-    Vec3 offset(grid(), grid(), grid());
-    offset[axis] = (pairs_.rng()() % 2 ? 1.0 : -1.0) *
-                   (MotionCase::Radius(*c.a) + MotionCase::Radius(*c.b) + 0.5 + 1.5 * Uniform());
+    Vec3 offset = scenes::DrawVector(grid);
+    const double sign = pairs_.rng()() % 2 ? 1.0 : -1.0;
+    offset[axis] = sign * (MotionCase::Radius(*c.a) + MotionCase::Radius(*c.b) + 0.5 + 1.5 * Uniform());
     Vec3 velocity = Vec3::Zero();
     velocity[axis] = -offset[axis] / (1.0 + Uniform());
     if (pairs_.rng()() % 2) velocity[(axis + 1) % 3] = grid();
@@ -144,8 +143,9 @@ class MotionCaseGenerator {
     c.t_begin = t0 + 0.5 * Uniform();
     c.path_a = RandomPath(t0, 0.0, spin);
     const double speed = 0.5 + 2.0 * Uniform();
-    c.path_a.centre.v0 = speed * (pairs_.RandomUnit() - (1.5 * Uniform() - 0.5) * normal);
-    if (accelerate && Uniform() < 0.5) c.path_a.centre.a = pairs_.RandomUnit() * 2.0 * Uniform();
+    const double towards = 1.5 * Uniform() - 0.5;
+    c.path_a.centre.v0 = speed * (pairs_.RandomUnit() - towards * normal);
+    if (accelerate && Uniform() < 0.5) c.path_a.centre.a = RandomVector(2.0);
     const double height = r + 0.1 + 3.0 * Uniform();
     c.path_a.centre.p0 = Vec3(pairs_.RandomUnit() * 5.0);
     c.path_a.centre.p0 += (height - normal.dot(c.path_a.centre.PositionAt(c.t_begin))) * normal;
@@ -158,13 +158,21 @@ class MotionCaseGenerator {
  private:
   const Shape* Pick() { return &shapes_[pairs_.rng()() % shapes_.size()]; }
 
+  // A random direction times `scale` times a uniform draw: the draw first, then the direction
+  // (the order GCC on x86-64 took for RandomUnit() * Uniform(), so that every compiler makes
+  // the same cases; see PairGenerator::Next).
+  Vec3 RandomVector(double scale) {
+    const double length = Uniform();
+    return pairs_.RandomUnit() * scale * length;
+  }
+
   RigidPath RandomPath(double t0, double speed, double spin) {
     RigidPath p;
     p.centre.t0 = t0;
-    p.centre.p0 = pairs_.RandomUnit() * Uniform();
+    p.centre.p0 = RandomVector(1.0);
     p.centre.v0 = pairs_.RandomUnit() * speed;
     p.q0 = pairs_.RandomRotation();
-    if (spin > 0.0) p.omega = pairs_.RandomUnit() * spin * Uniform();
+    if (spin > 0.0) p.omega = RandomVector(spin);
     return p;
   }
 

@@ -16,7 +16,7 @@ namespace sparsedyn::scenes {
 namespace {
 
 // Random sequential placement by brute force, drawing exactly as the preset does (three
-// uniforms per attempt) and accepting a candidate no closer than one diameter to any sphere;
+// uniforms per attempt, z first) and accepting a candidate no closer than one diameter to any sphere;
 // nullopt where the preset gives up for the lattice (after 200 attempts per sphere).
 std::optional<std::vector<Vec3>> PlaceByBruteForce(const GasOptions& o) {
   const double side = GasBoxSide(o);
@@ -28,7 +28,8 @@ std::optional<std::vector<Vec3>> PlaceByBruteForce(const GasOptions& o) {
   std::uint64_t attempts = 0;
   while (placed.size() < o.n) {
     if (++attempts > 200ull * o.n) return std::nullopt;
-    const Vec3 p(random.Uniform(lo, hi), random.Uniform(lo, hi), random.Uniform(lo, hi));
+    // In the preset's order (DrawVector: z, y, x), not the compiler's order of arguments.
+    const Vec3 p = DrawVector([&] { return random.Uniform(lo, hi); });
     bool free = true;
     for (const Vec3& q : placed) {
       Vec3 d = q - p;

@@ -51,12 +51,13 @@ long double OracleGap(const Mover& a, const Mover& b, long double t) {
 }
 
 std::pair<Mover, Mover> RandomMoverPair(scenes::Random& random, bool accelerated, bool envelope) {
-  auto vec = [&](double s) {
-    return Vec3(random.Uniform(-s, s), random.Uniform(-s, s), random.Uniform(-s, s));
-  };
+  // The draws are sequenced (scenes::DrawVector) in the order GCC on x86-64 took them when
+  // they were function arguments and operands, so that clang draws the same pairs.
+  auto vec = [&](double s) { return scenes::DrawVector([&] { return random.Uniform(-s, s); }); };
   Mover a{vec(5), vec(2), Vec3::Zero(), random.Uniform(0.1, 1), 0, 0};
   Mover b{vec(5), vec(2), Vec3::Zero(), random.Uniform(0.1, 1), 0, 0};
-  b.v = a.v + (a.p - b.p).normalized() * random.Uniform(0.5, 2) + vec(0.5);
+  const Vec3 aside = vec(0.5);
+  b.v = a.v + (a.p - b.p).normalized() * random.Uniform(0.5, 2) + aside;
   if (accelerated) {
     a.a = vec(1);
     b.a = vec(1);
