@@ -116,7 +116,12 @@ int Run(const RunOptions& options) {
   }
   World& world = setup->world;
   SceneDescription& scene = setup->scene;
-  const double until = options.until.value_or(scene.duration);
+  const double until = options.until.value_or(scene.EndTime());
+  if (until < scene.settings.start_time) {
+    std::cerr << "sparsedyn run: --until " << until << " is before the scene's start_time "
+              << scene.settings.start_time << "\n";
+    return 2;
+  }
   if (const Status clock = CheckClockResolution(world, until); !clock) {
     std::cerr << "sparsedyn run: " << (options.until ? "--until" : "duration") << ": "
               << clock.error().message << "\n";
@@ -125,7 +130,7 @@ int Run(const RunOptions& options) {
 
   // --write-scene writes the fully expanded scene (every body) and runs nothing.
   if (!options.write_scene.empty()) {
-    scene.duration = until;
+    scene.duration = until - scene.settings.start_time;
     if (const Status written = WriteScene(scene, options.write_scene); !written) {
       std::cerr << "sparsedyn run: --write-scene: " << written.error().message << "\n";
       return 1;

@@ -32,6 +32,13 @@ ordered_json BodyJson(const SceneDescription& scene, const SceneBody& body) {
   out["velocity"] = VectorJson(body.velocity);
   out["angular_velocity"] = VectorJson(body.angular_velocity);
   if (!body.thrust.isZero(0.0)) out["thrust"] = VectorJson(body.thrust);
+  if (!body.thrust_schedule.empty()) {
+    ordered_json schedule = ordered_json::array();
+    for (const ThrustChange& change : body.thrust_schedule) {
+      schedule.push_back({{"time", change.time}, {"thrust", VectorJson(change.thrust)}});
+    }
+    out["thrust_schedule"] = std::move(schedule);
+  }
   if (body.density) {
     out["density"] = *body.density;
   } else {
@@ -50,6 +57,8 @@ std::string FormatScene(const SceneDescription& scene) {
   top["name"] = scene.name;
   top["seed"] = scene.seed;
   if (scene.packing) top["packing"] = *scene.packing;
+  // Written only when not 0, so that scenes that start at 0 read as they always did.
+  if (settings.start_time != 0.0) top["start_time"] = settings.start_time;
   top["duration"] = scene.duration;
   top["container"] = ContainerJson(settings.container);
   top["gravity"] = VectorJson(settings.gravity);
@@ -95,6 +104,7 @@ BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index) {
   def.velocity = body.velocity;
   def.angular_velocity = body.angular_velocity;
   def.thrust = body.thrust;
+  def.thrust_schedule = body.thrust_schedule;
   def.mass = body.mass;
   def.restitution = body.restitution;
   def.friction = body.friction;

@@ -46,7 +46,10 @@ struct SceneBody {
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body to world, unit
   Vec3 velocity = Vec3::Zero();                                     ///< m/s
   Vec3 angular_velocity = Vec3::Zero();                             ///< rad/s, world frame
-  Vec3 thrust = Vec3::Zero();     ///< own acceleration added to gravity, m/s^2
+  Vec3 thrust = Vec3::Zero();  ///< own acceleration added to gravity, m/s^2
+  /// Later changes of `thrust` (s, m/s^2), times strictly increasing and not before the
+  /// scene's start time (WorldSettings::start_time): BodyDef::thrust_schedule.
+  std::vector<ThrustChange> thrust_schedule;
   double mass = 1.0;              ///< kg (from "mass", or "density" x volume)
   std::optional<double> density;  ///< kg/m^3 when the file gave a density
   double restitution = 1.0;       ///< in [0, 1]
@@ -58,8 +61,10 @@ struct SceneDescription {
   std::string name;               ///< reported by `sparsedyn run` as "preset"
   std::uint64_t seed = 1;         ///< default seed of random generators; reported
   std::optional<double> packing;  ///< informational packing fraction, reported as "density"
-  double duration = 10.0;         ///< simulated seconds `sparsedyn run` advances by default
-  /// The World's settings (container, gravity, broad phase, tolerances).
+  /// Simulated seconds `sparsedyn run` advances by default, from the start time: the run ends
+  /// at EndTime().
+  double duration = 10.0;
+  /// The World's settings (container, gravity, broad phase, tolerances, start time).
   WorldSettings settings;
   /// The distinct shapes; bodies refer to them by index.
   std::vector<SceneShape> shapes;
@@ -70,6 +75,8 @@ struct SceneDescription {
   std::uint32_t AddShape(SceneShape shape);
   /// The number of bodies whose shape is a polyhedron.
   std::size_t PolyhedralBodyCount() const;
+  /// When `sparsedyn run` stops by default: settings.start_time + duration, s.
+  double EndTime() const { return settings.start_time + duration; }
 };
 
 /// A sphere shape of radius `radius` with its spec.
