@@ -91,8 +91,10 @@ int RunConventional(const RunOptions& options) {
     return status;
   };
   if (!options.dt) return fail("--method conventional needs --dt (the time step, s)", 2);
-  if (!options.record_file.empty() || !options.write_scene.empty() || options.broadphase) {
-    return fail("--record, --write-scene and --broadphase apply to --method event", 2);
+  if (!options.record_file.empty() || !options.write_scene.empty() ||
+      !options.write_final_scene.empty() || options.broadphase) {
+    return fail(
+        "--record, --write-scene, --write-final-scene and --broadphase apply to --method event", 2);
   }
   Result<SceneDescription> scene = LoadScene(options);
   if (!scene) return fail(scene.error().message, 2);

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Scene files: writing a SceneDescription back (FormatScene) and building its World.
+// Scene files: writing a SceneDescription back (FormatScene), the scene of a World at its end
+// (FinalScene) and building its World.
+#include <algorithm>
 #include <fstream>
 
 #include "io/json_checker.hpp"
@@ -91,6 +93,41 @@ Status WriteScene(const SceneDescription& scene, const std::filesystem::path& pa
   file.close();
   if (!file) return Error{path.string() + ": write failed"};
   return Status::Ok();
+}
+
+namespace {
+
+// The body's thrust at `now` and what is left of its schedule: the changes at times <= now
+// have been processed (AdvanceTo processes every event with time <= its end).
+void RunScheduleTo(SceneBody& body, double now) {
+  std::vector<ThrustChange>& schedule = body.thrust_schedule;
+  const auto later = std::find_if(schedule.begin(), schedule.end(),
+                                  [now](const ThrustChange& change) { return change.time > now; });
+  if (later != schedule.begin()) body.thrust = std::prev(later)->thrust;
+  schedule.erase(schedule.begin(), later);
+}
+
+}  // namespace
+
+SceneDescription FinalScene(const SceneDescription& scene, const World& world,
+                            const std::vector<BodyId>& ids) {
+  SPARSEDYN_ASSERT(ids.size() == scene.bodies.size(), "FinalScene: one handle per scene body");
+  const double now = world.Time();
+  SceneDescription out = scene;
+  out.settings.start_time = now;
+  out.bodies.clear();
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (!world.IsValid(ids[i])) continue;  // removed
+    SceneBody body = scene.bodies[i];
+    const BodyState state = world.StateAt(ids[i], now);
+    body.position = state.position;
+    body.orientation = state.orientation;
+    body.velocity = state.velocity;
+    body.angular_velocity = state.angular_velocity;
+    RunScheduleTo(body, now);
+    out.bodies.push_back(std::move(body));
+  }
+  return out;
 }
 
 BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index) {
