@@ -91,11 +91,24 @@ int RunConventional(const RunOptions& options) {
     return status;
   };
   if (!options.dt) return fail("--method conventional needs --dt (the time step, s)", 2);
-  if (!options.record_file.empty() || !options.write_scene.empty() || options.broadphase) {
-    return fail("--record, --write-scene and --broadphase apply to --method event", 2);
+  if (!options.record_file.empty() || !options.write_scene.empty() ||
+      !options.write_final_scene.empty() || options.broadphase) {
+    return fail(
+        "--record, --write-scene, --write-final-scene and --broadphase apply to --method event", 2);
   }
   Result<SceneDescription> scene = LoadScene(options);
   if (!scene) return fail(scene.error().message, 2);
+  // The time-stepped method starts at 0 with constant thrusts (docs/conventional.md).
+  if (scene->settings.start_time != 0.0) {
+    return fail("--method conventional: the scene's start_time must be 0", 2);
+  }
+  for (std::size_t i = 0; i < scene->bodies.size(); ++i) {
+    if (!scene->bodies[i].thrust_schedule.empty()) {
+      return fail("--method conventional: bodies[" + std::to_string(i) +
+                      "].thrust_schedule: thrust schedules apply to --method event",
+                  2);
+    }
+  }
   const ConventionalSettings conventional{.dt = *options.dt, .digits = options.digits.value_or(4)};
   Result<ConventionalWorld> world = Build(*scene, conventional);
   if (!world) {
@@ -103,7 +116,7 @@ int RunConventional(const RunOptions& options) {
     return fail(where + world.error().message, 2);
   }
 
-  const double until = options.until.value_or(scene->duration);
+  const double until = options.until.value_or(scene->EndTime());
   const double energy_initial = world->KineticEnergy();
   const Vec3 momentum_initial = world->Momentum();
   const auto start = std::chrono::steady_clock::now();

@@ -8,17 +8,21 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "apps/cli/conventional_run.hpp"
 #include "apps/cli/progress.hpp"
 #include "apps/cli/run_options.hpp"
 #include "apps/cli/run_support.hpp"
+#include "apps/cli/scene_output.hpp"
 #include "scenes/presets.hpp"
 #include "sparsedyn/io/recording.hpp"
 #include "sparsedyn/io/run_summary.hpp"
@@ -34,8 +38,17 @@ constexpr const char* kDefaultRecording = "sparsedyn-default.sdrec";
 struct Setup {
   SceneDescription scene;
   World world;
-  double density = 0;  // packing fraction reported as "density"
+  double density = 0;       // packing fraction reported as "density"
+  std::vector<BodyId> ids;  // the handle of every scene body, in the scene's order
 };
+
+// The handles of a World's bodies just after it was built: scene body i is in slot i.
+std::vector<BodyId> Handles(const World& world) {
+  std::vector<BodyId> ids;
+  ids.reserve(world.BodyCount());
+  for (std::uint32_t i = 0; i < world.BodyCount(); ++i) ids.push_back(world.IdOf(i));
+  return ids;
+}
 
 // The scene file or the preset, and its World; an Error names the bad option or file.
 Result<Setup> MakeSetup(const RunOptions& options) {
@@ -48,7 +61,9 @@ Result<Setup> MakeSetup(const RunOptions& options) {
     request.broadphase = broadphase;
     Result<scenes::Preset> preset = scenes::MakePreset(request);
     if (!preset) return preset.error();
-    return Setup{std::move(preset->scene), std::move(preset->world), preset->density};
+    std::vector<BodyId> ids = Handles(preset->world);
+    return Setup{std::move(preset->scene), std::move(preset->world), preset->density,
+                 std::move(ids)};
   }
   // A scene file says everything itself; only the broad phase and the duration may be overridden.
   for (const auto& [given, name] : {std::pair{options.preset.has_value(), "--preset"},
@@ -63,7 +78,8 @@ Result<Setup> MakeSetup(const RunOptions& options) {
   Result<World> world = BuildWorld(*scene);
   if (!world) return Error{options.scene_file + ": " + world.error().message};
   const double density = PackingOf(*scene);
-  return Setup{std::move(*scene), std::move(*world), density};
+  std::vector<BodyId> ids = Handles(*world);
+  return Setup{std::move(*scene), std::move(*world), density, std::move(ids)};
 }
 
 // The recording file to write: --record, or the default file for the default scene.
@@ -103,10 +119,107 @@ void PrintSummary(const nlohmann::json& out) {
               number("max_penetration"));
 }
 
+// Options that cannot go together, and output paths that cannot be written, before any work.
+Status CheckOptions(const RunOptions& options) {
+  if (options.dt || options.digits) {
+    return Error{"--dt and --digits apply to --method conventional"};
+  }
+  if (!options.write_scene.empty() && !options.write_final_scene.empty()) {
+    return Error{"--write-scene runs nothing, --write-final-scene writes after a run: give one"};
+  }
+  for (const auto& [path, name] : {std::pair{&options.write_scene, "--write-scene"},
+                                   {&options.write_final_scene, "--write-final-scene"}}) {
+    if (path->empty()) continue;
+    if (Status ok = CheckScenePath(*path); !ok) {
+      return Error{std::string(name) + ": " + ok.error().message};
+    }
+  }
+  return Status::Ok();
+}
+
+// The time the run advances to: --until (absolute) or the scene's start_time + duration.
+Result<double> EndTimeOf(const RunOptions& options, const Setup& setup) {
+  const double until = options.until.value_or(setup.scene.EndTime());
+  const double start = setup.scene.settings.start_time;
+  const char* name = options.until ? "--until" : "duration";
+  if (until < start) {
+    std::ostringstream message;
+    message << std::setprecision(17) << name << " " << until << " is before the scene's start_time "
+            << start;
+    return Error{message.str()};
+  }
+  if (const Status clock = CheckClockResolution(setup.world, until); !clock) {
+    return Error{std::string(name) + ": " + clock.error().message};
+  }
+  return until;
+}
+
+// --write-scene: the fully expanded scene (every body) to run until `until`; runs nothing.
+int WriteStartScene(const RunOptions& options, SceneDescription scene, double until) {
+  scene.duration = until - scene.settings.start_time;
+  const std::size_t bodies = scene.bodies.size();
+  if (const Status written =
+          WriteSceneFile(std::move(scene), options.scene_file, options.write_scene);
+      !written) {
+    std::cerr << "sparsedyn run: --write-scene: " << written.error().message << "\n";
+    return 1;
+  }
+  std::fprintf(stderr, "sparsedyn run: wrote %s (%zu bodies); run it with: %s run %s\n",
+               options.write_scene.c_str(), bodies, options.program.c_str(),
+               options.write_scene.c_str());
+  return 0;
+}
+
+// The recording of the run (--record, or the default scene's), opened before the run so that
+// a bad path fails before any work; nullopt when none is asked for, an Error when it fails.
+Result<std::optional<RecordingWriter>> OpenRecording(const std::string& path, Setup& setup,
+                                                     double until) {
+  if (path.empty()) return std::optional<RecordingWriter>{};
+  auto [header, bodies] = DescribeForRecording(setup.scene, until);
+  Result<RecordingWriter> writer = RecordingWriter::Open(path, header, bodies);
+  if (!writer) return writer.error();
+  writer->Attach(setup.world);
+  return std::optional<RecordingWriter>(std::move(*writer));
+}
+
+// --write-final-scene after a run that succeeded; the Error says why nothing was written.
+Status WriteFinalSceneOf(const RunOptions& options, const Setup& setup, const Status& run) {
+  if (!run) return Error{"not written: the run stopped with an error"};
+  return WriteFinalScene(setup.scene, options.scene_file, setup.world, setup.ids,
+                         options.write_final_scene);
+}
+
+// Prints the summary (JSON or text) and returns the exit status.
+int Report(const RunOptions& options, const nlohmann::json& out, const Status& status,
+           double clock) {
+  const int exit_status = status ? 0 : 1;
+  if (options.json) {
+    std::cout << out.dump(2) << "\n";
+    return exit_status;
+  }
+  PrintSummary(out);
+  if (!status) {
+    std::printf("  stopped by an error at t = %.17g: %s\n", clock, status.error().message.c_str());
+  }
+  if (out.contains("final_scene")) {
+    std::printf("  final scene %s: run on with %s run %s --until T\n",
+                options.write_final_scene.c_str(), options.program.c_str(),
+                options.write_final_scene.c_str());
+  }
+  if (out.contains("recording")) {
+    const std::string path = out["recording"].get<std::string>();
+    const double bytes = out["recording_bytes"].get<double>();
+    std::printf("  recording %s: %.0f bytes (%.0f per collision)\n", path.c_str(), bytes,
+                bytes / std::max(1.0, out["collisions"].get<double>()));
+    std::printf("\nView it with:\n  %s view %s\n", options.program.c_str(), path.c_str());
+  }
+  return exit_status;
+}
+
 int Run(const RunOptions& options) {
   if (options.method == "conventional") return RunConventional(options);
-  if (options.dt || options.digits) {
-    std::cerr << "sparsedyn run: --dt and --digits apply to --method conventional\n";
+  if (Status checked = CheckOptions(options); !checked) {
+    std::cerr << "sparsedyn run: " << checked.error().message << "\n";
     return 2;
   }
   Result<Setup> setup = MakeSetup(options);
@@ -114,82 +227,48 @@ int Run(const RunOptions& options) {
     std::cerr << "sparsedyn run: " << setup.error().message << "\n";
     return 2;
   }
-  World& world = setup->world;
-  SceneDescription& scene = setup->scene;
-  const double until = options.until.value_or(scene.duration);
-  if (const Status clock = CheckClockResolution(world, until); !clock) {
-    std::cerr << "sparsedyn run: " << (options.until ? "--until" : "duration") << ": "
-              << clock.error().message << "\n";
+  const Result<double> until = EndTimeOf(options, *setup);
+  if (!until) {
+    std::cerr << "sparsedyn run: " << until.error().message << "\n";
+    return 2;
+  }
+  if (!options.write_scene.empty()) return WriteStartScene(options, setup->scene, *until);
+  const std::string recording_path = RecordingPath(options);
+  Result<std::optional<RecordingWriter>> recorder = OpenRecording(recording_path, *setup, *until);
+  if (!recorder) {
+    std::cerr << "sparsedyn run: recording: " << recorder.error().message << "\n";
     return 2;
   }
 
-  // --write-scene writes the fully expanded scene (every body) and runs nothing.
-  if (!options.write_scene.empty()) {
-    scene.duration = until;
-    if (const Status written = WriteScene(scene, options.write_scene); !written) {
-      std::cerr << "sparsedyn run: --write-scene: " << written.error().message << "\n";
-      return 1;
-    }
-    std::fprintf(stderr, "sparsedyn run: wrote %s (%zu bodies); run it with: %s run %s\n",
-                 options.write_scene.c_str(), scene.bodies.size(), options.program.c_str(),
-                 options.write_scene.c_str());
-    return 0;
-  }
-
-  // The recording is opened before the run so that a bad path fails before any work.
-  const std::string recording_path = RecordingPath(options);
-  std::optional<RecordingWriter> recorder;
-  if (!recording_path.empty()) {
-    auto [header, bodies] = DescribeForRecording(scene, until);
-    Result<RecordingWriter> writer = RecordingWriter::Open(recording_path, header, bodies);
-    if (!writer) {
-      std::cerr << "sparsedyn run: recording: " << writer.error().message << "\n";
-      return 2;
-    }
-    recorder.emplace(std::move(*writer));
-    recorder->Attach(world);
-  }
-
+  World& world = setup->world;
   const double energy_initial = world.KineticEnergy();
   const Vec3 momentum_initial = world.Momentum();
   const auto start = std::chrono::steady_clock::now();
-  const Status status = AdvanceWithProgress(world, until);
+  const Status status = AdvanceWithProgress(world, *until);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // A failed run keeps what it did: the recording ends at the last processed event (where the
   // clock stopped), the summary is printed with the error, and the exit status says it failed.
   if (!status) std::cerr << "sparsedyn run: " << status.error().message << "\n";
-  const int exit_status = status ? 0 : 1;
-  if (recorder) {
-    if (const Status finished = recorder->Finish(world.Time()); !finished) {
+  nlohmann::json out = Summary(*setup, wall, energy_initial, momentum_initial);
+  if (*recorder) {
+    if (const Status finished = (*recorder)->Finish(world.Time()); !finished) {
       std::cerr << "sparsedyn run: recording: " << finished.error().message << "\n";
       return 1;
     }
-  }
-
-  nlohmann::json out = Summary(*setup, wall, energy_initial, momentum_initial);
-  if (recorder) {
     out["recording"] = recording_path;
-    out["recording_bytes"] = recorder->BytesWritten();
+    out["recording_bytes"] = (*recorder)->BytesWritten();
+  }
+  if (!options.write_final_scene.empty()) {
+    if (const Status written = WriteFinalSceneOf(options, *setup, status); !written) {
+      std::cerr << "sparsedyn run: --write-final-scene: " << written.error().message << "\n";
+      if (status) return 1;
+    } else {
+      out["final_scene"] = options.write_final_scene;
+    }
   }
   if (!status) out["error"] = status.error().message;
-  if (options.json) {
-    std::cout << out.dump(2) << "\n";
-    return exit_status;
-  }
-  PrintSummary(out);
-  if (!status) {
-    std::printf("  stopped by an error at t = %.17g: %s\n", world.Time(),
-                status.error().message.c_str());
-  }
-  if (recorder) {
-    const double collisions = std::max(1.0, out["collisions"].get<double>());
-    std::printf("  recording %s: %llu bytes (%.0f per collision)\n", recording_path.c_str(),
-                static_cast<unsigned long long>(recorder->BytesWritten()),
-                static_cast<double>(recorder->BytesWritten()) / collisions);
-    std::printf("\nView it with:\n  %s view %s\n", options.program.c_str(), recording_path.c_str());
-  }
-  return exit_status;
+  return Report(options, out, status, world.Time());
 }
 
 }  // namespace
@@ -222,6 +301,9 @@ void AddRunCommand(CLI::App& app, const std::string& program) {
   run->add_option("--write-scene", options->write_scene,
                   "Write the scene with every body listed to this JSON file and exit "
                   "(`sparsedyn run FILE` then gives the same run)");
+  run->add_option("--write-final-scene", options->write_final_scene,
+                  "After the run, write the World at the end time to this JSON file as a scene "
+                  "that runs on from there (`sparsedyn run FILE --until T`)");
   run->add_option("--method", options->method,
                   "event (default: the event-driven World) | conventional (fixed steps of --dt, "
                   "collisions located by bisection to --digits more digits; polyhedra only)")

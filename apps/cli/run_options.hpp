@@ -20,10 +20,11 @@ struct RunOptions {
   std::string record_file;
   bool no_record = false;
   std::string write_scene;
-  std::string program;           // how to invoke this tool again, for the "view it with" hint
-  std::string method = "event";  // event (the World) | conventional (docs/conventional.md)
-  std::optional<double> dt;      // the conventional method's step, s
-  std::optional<int> digits;     // the conventional method's bisection digits (A2; 4)
+  std::string write_final_scene;  // the scene of the World at the end of the run
+  std::string program;            // how to invoke this tool again, for the "view it with" hint
+  std::string method = "event";   // event (the World) | conventional (docs/conventional.md)
+  std::optional<double> dt;       // the conventional method's step, s
+  std::optional<int> digits;      // the conventional method's bisection digits (A2; 4)
 };
 
 }  // namespace sparsedyn::cli

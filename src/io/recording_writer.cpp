@@ -128,7 +128,7 @@ std::pair<RecordingHeader, std::vector<RecordedBody>> DescribeForRecording(
   header.bodies = static_cast<std::uint32_t>(scene.bodies.size());
   header.container = scene.settings.container;
   header.gravity = scene.settings.gravity;
-  header.start_time = 0.0;
+  header.start_time = scene.settings.start_time;
   header.end_time = end_time;
   for (const SceneShape& shape : scene.shapes) {
     if (shape.kind == SceneShape::Kind::kSphere) {

@@ -23,6 +23,9 @@ namespace {
 constexpr double kQuaternionNormTolerance = 1e-6;
 // Upper bound on bodies in one file (the World's indices are 32-bit).
 constexpr std::uint64_t kMaxBodies = 100000000;
+// Upper bound on times in a file (start, duration, thrust changes), s: far beyond any run, and
+// small enough that the clock still resolves events there (CheckClockResolution).
+constexpr double kMaxTime = 1e12;
 
 // "line L, column C" of a byte offset, for JSON syntax errors.
 std::string LineColumn(std::string_view text, std::size_t byte) {
@@ -44,10 +47,10 @@ class SceneParser {
       : checker_(std::string(name)), base_dir_(std::move(base_dir)) {}
 
   Result<SceneDescription> Parse(const json& root) {
-    if (checker_.Object(
-            root, "",
-            {"name", "description", "seed", "packing", "duration", "gravity", "broadphase",
-             "grid_cells_per_body", "stall_event_limit", "container", "tolerances", "bodies"})) {
+    if (checker_.Object(root, "",
+                        {"name", "description", "seed", "packing", "start_time", "duration",
+                         "gravity", "broadphase", "grid_cells_per_body", "stall_event_limit",
+                         "container", "tolerances", "bodies"})) {
       ParseTopLevel(root);
     }
     if (!checker_.ok()) return checker_.ToError();
@@ -66,10 +69,17 @@ class SceneParser {
     if (root.contains("packing")) {
       scene_.packing = checker_.NumberIn(root["packing"], "packing", 0, 1, true);
     }
-    if (root.contains("duration")) {
-      if (auto d = checker_.NumberIn(root["duration"], "duration", 0, 1e12)) scene_.duration = *d;
-    }
     WorldSettings& settings = scene_.settings;
+    // Read before the bodies: their thrust schedules may not start before it.
+    if (root.contains("start_time")) {
+      if (auto t = checker_.NumberIn(root["start_time"], "start_time", 0, kMaxTime)) {
+        settings.start_time = *t;
+      }
+    }
+    if (root.contains("duration")) {
+      if (auto d = checker_.NumberIn(root["duration"], "duration", 0, kMaxTime))
+        scene_.duration = *d;
+    }
     if (root.contains("gravity")) {
       if (auto g = checker_.Vector(root["gravity"], "gravity")) settings.gravity = *g;
     }
@@ -184,9 +194,10 @@ class SceneParser {
   }
 
   void ParseBody(const json& value, const std::string& path) {
-    if (!checker_.Object(value, path,
-                         {"shape", "position", "orientation", "velocity", "angular_velocity",
-                          "thrust", "mass", "density", "restitution", "friction", "static"})) {
+    if (!checker_.Object(
+            value, path,
+            {"shape", "position", "orientation", "velocity", "angular_velocity", "thrust",
+             "thrust_schedule", "mass", "density", "restitution", "friction", "static"})) {
       return;
     }
     SceneBody body;
@@ -210,6 +221,9 @@ class SceneParser {
       } else {
         checker_.Fail(Key(path, "static"), "must be true or false");
       }
+    }
+    if (value.contains("thrust_schedule")) {
+      ParseThrustSchedule(value["thrust_schedule"], Key(path, "thrust_schedule"), body);
     }
     ParseMass(value, path, body);
     if (value.contains("restitution")) {
@@ -244,6 +258,43 @@ class SceneParser {
       return;
     }
     body.orientation = quaternion.norm() == 1.0 ? quaternion : quaternion.normalized();
+  }
+
+  // [{"time": t, "thrust": [x, y, z]}, ...]: times strictly increasing, none before the start.
+  void ParseThrustSchedule(const json& value, const std::string& at, SceneBody& body) {
+    if (!value.is_array()) {
+      checker_.Fail(at, "must be an array of {\"time\": t, \"thrust\": [x, y, z]}, got " +
+                            json_input::Describe(value));
+      return;
+    }
+    const double start = scene_.settings.start_time;
+    std::optional<double> previous;
+    for (std::size_t k = 0; k < value.size(); ++k) {
+      const std::string entry = Index(at, k);
+      if (!checker_.Object(value[k], entry, {"time", "thrust"})) return;
+      for (const char* key : {"time", "thrust"}) {
+        if (!value[k].contains(key)) checker_.Fail(Key(entry, key), "is missing");
+      }
+      if (!value[k].contains("time") || !value[k].contains("thrust")) return;
+      const std::optional<double> time =
+          checker_.NumberIn(value[k]["time"], Key(entry, "time"), 0, kMaxTime);
+      const std::optional<Vec3> thrust = checker_.Vector(value[k]["thrust"], Key(entry, "thrust"));
+      if (!time || !thrust) return;
+      if (*time < start) {
+        checker_.Fail(Key(entry, "time"), "must not be before start_time (" +
+                                              json_input::FormatNumber(start) + "), got " +
+                                              json_input::FormatNumber(*time));
+        return;
+      }
+      if (previous && !(*time > *previous)) {
+        checker_.Fail(Key(entry, "time"), "must be later than " + Index(at, k - 1) + ".time (" +
+                                              json_input::FormatNumber(*previous) + "), got " +
+                                              json_input::FormatNumber(*time));
+        return;
+      }
+      previous = time;
+      body.thrust_schedule.push_back(ThrustChange{*time, *thrust});
+    }
   }
 
   // "mass" or "density" (not both); neither means 1 kg.

@@ -267,4 +267,28 @@ Result<SceneShape> ParseShapeSpec(std::string_view spec_json, const std::filesys
   return std::move(*shape);
 }
 
+void RebaseMeshPaths(SceneDescription& scene, const std::filesystem::path& from_dir,
+                     const std::filesystem::path& to_dir) {
+  namespace fs = std::filesystem;
+  // Lexically, as ReadMesh resolves them (base_dir / path): no file needs to exist yet. An
+  // empty folder is the current one (the parent of a bare file name).
+  const auto folder = [](const fs::path& dir) {
+    return fs::absolute(dir.empty() ? fs::path(".") : dir).lexically_normal();
+  };
+  const fs::path from = folder(from_dir);
+  const fs::path to = folder(to_dir);
+  if (from == to) return;
+  for (SceneShape& shape : scene.shapes) {
+    if (shape.kind != SceneShape::Kind::kPolyhedron) continue;
+    nlohmann::json spec = nlohmann::json::parse(shape.spec);
+    if (!spec.contains("mesh")) continue;
+    const fs::path mesh = spec["mesh"].get<std::string>();
+    if (mesh.is_absolute()) continue;
+    const fs::path moved = (from / mesh).lexically_normal().lexically_relative(to);
+    // Different roots (another drive) have no relative path: name the file absolutely.
+    spec["mesh"] = (moved.empty() ? (from / mesh).lexically_normal() : moved).generic_string();
+    shape.spec = spec.dump();
+  }
+}
+
 }  // namespace sparsedyn

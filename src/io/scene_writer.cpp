@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Scene files: writing a SceneDescription back (FormatScene) and building its World.
+// Scene files: writing a SceneDescription back (FormatScene), the scene of a World at its end
+// (FinalScene) and building its World.
+#include <algorithm>
 #include <fstream>
 
 #include "io/json_checker.hpp"
@@ -32,6 +34,13 @@ ordered_json BodyJson(const SceneDescription& scene, const SceneBody& body) {
   out["velocity"] = VectorJson(body.velocity);
   out["angular_velocity"] = VectorJson(body.angular_velocity);
   if (!body.thrust.isZero(0.0)) out["thrust"] = VectorJson(body.thrust);
+  if (!body.thrust_schedule.empty()) {
+    ordered_json schedule = ordered_json::array();
+    for (const ThrustChange& change : body.thrust_schedule) {
+      schedule.push_back({{"time", change.time}, {"thrust", VectorJson(change.thrust)}});
+    }
+    out["thrust_schedule"] = std::move(schedule);
+  }
   if (body.density) {
     out["density"] = *body.density;
   } else {
@@ -51,6 +60,8 @@ std::string FormatScene(const SceneDescription& scene) {
   top["name"] = scene.name;
   top["seed"] = scene.seed;
   if (scene.packing) top["packing"] = *scene.packing;
+  // Written only when not 0, so that scenes that start at 0 read as they always did.
+  if (settings.start_time != 0.0) top["start_time"] = settings.start_time;
   top["duration"] = scene.duration;
   top["container"] = ContainerJson(settings.container);
   top["gravity"] = VectorJson(settings.gravity);
@@ -85,6 +96,41 @@ Status WriteScene(const SceneDescription& scene, const std::filesystem::path& pa
   return Status::Ok();
 }
 
+namespace {
+
+// The body's thrust at `now` and what is left of its schedule: the changes at times <= now
+// have been processed (AdvanceTo processes every event with time <= its end).
+void RunScheduleTo(SceneBody& body, double now) {
+  std::vector<ThrustChange>& schedule = body.thrust_schedule;
+  const auto later = std::find_if(schedule.begin(), schedule.end(),
+                                  [now](const ThrustChange& change) { return change.time > now; });
+  if (later != schedule.begin()) body.thrust = std::prev(later)->thrust;
+  schedule.erase(schedule.begin(), later);
+}
+
+}  // namespace
+
+SceneDescription FinalScene(const SceneDescription& scene, const World& world,
+                            const std::vector<BodyId>& ids) {
+  SPARSEDYN_ASSERT(ids.size() == scene.bodies.size(), "FinalScene: one handle per scene body");
+  const double now = world.Time();
+  SceneDescription out = scene;
+  out.settings.start_time = now;
+  out.bodies.clear();
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (!world.IsValid(ids[i])) continue;  // removed
+    SceneBody body = scene.bodies[i];
+    const BodyState state = world.StateAt(ids[i], now);
+    body.position = state.position;
+    body.orientation = state.orientation;
+    body.velocity = state.velocity;
+    body.angular_velocity = state.angular_velocity;
+    RunScheduleTo(body, now);
+    out.bodies.push_back(std::move(body));
+  }
+  return out;
+}
+
 BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index) {
   const SceneBody& body = scene.bodies[index];
   const SceneShape& shape = scene.shapes[body.shape];
@@ -96,6 +142,7 @@ BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index) {
   def.velocity = body.velocity;
   def.angular_velocity = body.angular_velocity;
   def.thrust = body.thrust;
+  def.thrust_schedule = body.thrust_schedule;
   def.mass = body.mass;
   def.restitution = body.restitution;
   def.friction = body.friction;

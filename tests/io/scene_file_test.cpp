@@ -12,19 +12,15 @@
 #include <sstream>
 #include <string>
 
+#include "io/scene_test_util.hpp"
 #include "scenes/presets.hpp"
 #include "support/fp_traps.hpp"
 
 namespace sparsedyn {
 namespace {
 
-const std::filesystem::path kDataDir = std::filesystem::path(SPARSEDYN_SOURCE_DIR) / "data";
-
-// The error of parsing `json` (mesh paths relative to data/), or "<parsed>".
-std::string ErrorOf(const std::string& json) {
-  Result<SceneDescription> scene = ParseScene(json, "s.json", kDataDir);
-  return scene ? std::string("<parsed>") : scene.error().message;
-}
+const std::filesystem::path& kDataDir = testing::kSceneDataDir;
+const auto ErrorOf = testing::SceneErrorOf;
 
 // A scene with one body whose fields are `body` (JSON object members, without braces).
 std::string OneBody(const std::string& body, const std::string& top = "") {
@@ -58,11 +54,12 @@ TEST(SceneFileErrors, MissingOrEmptyBodies) {
 TEST(SceneFileErrors, UnknownKeysNameTheirPathAndTheAllowedKeys) {
   EXPECT_EQ(ErrorOf(OneBody(kSphere, R"("gravty": [0, 0, -9.81])")),
             "s.json: gravty: unknown key (allowed here: name, description, seed, packing, "
-            "duration, gravity, broadphase, grid_cells_per_body, stall_event_limit, container, "
-            "tolerances, bodies)");
+            "start_time, duration, gravity, broadphase, grid_cells_per_body, stall_event_limit, "
+            "container, tolerances, bodies)");
   EXPECT_EQ(ErrorOf(OneBody(std::string(kSphere) + R"(, "velocty": [1, 0, 0])")),
             "s.json: bodies[0].velocty: unknown key (allowed here: shape, position, orientation, "
-            "velocity, angular_velocity, thrust, mass, density, restitution, friction, static)");
+            "velocity, angular_velocity, thrust, thrust_schedule, mass, density, restitution, "
+            "friction, static)");
   EXPECT_EQ(ErrorOf(OneBody(R"("shape": {"sphere": {"radius": 1, "r": 2}})")),
             "s.json: bodies[0].shape.sphere.r: unknown key (allowed here: radius)");
 }
@@ -345,13 +342,16 @@ TEST(SceneFile, FormatSceneReadsBackBitForBit) {
   scene.bodies[0].orientation = Eigen::Quaterniond(0.5, 0.5, 0.5, 0.5);
   scene.bodies[0].angular_velocity = Vec3(0.1, 1.0 / 3.0, -2);
   scene.bodies[0].thrust = Vec3(0, 0, M_PI);
+  scene.bodies[0].thrust_schedule = {{0.1 + 0.2, Vec3(1.0 / 7.0, 0, -1)}, {4, Vec3::Zero()}};
   scene.bodies[1].friction = 0.7;
+  scene.settings.start_time = 1.0 / 3.0 - 0.2;  // not 0.1 + 0.2: any bits must come back
   Result<SceneDescription> read = ParseScene(FormatScene(scene), "w.json", kDataDir);
   ASSERT_TRUE(read.ok()) << read.error().message;
   EXPECT_EQ(read->name, scene.name);
   EXPECT_EQ(read->seed, scene.seed);
   EXPECT_EQ(read->packing, scene.packing);
   EXPECT_EQ(read->duration, scene.duration);
+  EXPECT_EQ(read->settings.start_time, scene.settings.start_time);
   ExpectSameBits(read->settings.container.hi, scene.settings.container.hi);
   ASSERT_EQ(read->bodies.size(), scene.bodies.size());
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
@@ -362,6 +362,11 @@ TEST(SceneFile, FormatSceneReadsBackBitForBit) {
     ExpectSameBits(a.velocity, b.velocity);
     ExpectSameBits(a.angular_velocity, b.angular_velocity);
     ExpectSameBits(a.thrust, b.thrust);
+    ASSERT_EQ(a.thrust_schedule.size(), b.thrust_schedule.size());
+    for (std::size_t k = 0; k < a.thrust_schedule.size(); ++k) {
+      EXPECT_EQ(a.thrust_schedule[k].time, b.thrust_schedule[k].time);
+      ExpectSameBits(a.thrust_schedule[k].thrust, b.thrust_schedule[k].thrust);
+    }
     EXPECT_EQ(a.orientation.coeffs(), b.orientation.coeffs());
     EXPECT_EQ(a.mass, b.mass);
     EXPECT_EQ(a.restitution, b.restitution);

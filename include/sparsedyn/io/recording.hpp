@@ -124,9 +124,9 @@ std::pair<RecordingHeader, std::vector<RecordedBody>> DescribeForRecording(const
                                                                            std::uint64_t seed,
                                                                            double end_time);
 
-/// The header and body records of a scene before it runs (start_time 0): its shapes table as it
-/// is (polyhedra as their meshes in the body frame, centroid at the origin) and every body's
-/// mass and bounding radius. The segments of polyhedra carry their orientation and angular
+/// The header and body records of a scene before it runs (from its start time): its shapes table
+/// as it is (polyhedra as their meshes in the body frame, centroid at the origin) and every
+/// body's mass and bounding radius. The segments of polyhedra carry their orientation and angular
 /// velocity (RecordedSegment::has_rotation).
 std::pair<RecordingHeader, std::vector<RecordedBody>> DescribeForRecording(
     const SceneDescription& scene, double end_time);

@@ -46,7 +46,10 @@ struct SceneBody {
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body to world, unit
   Vec3 velocity = Vec3::Zero();                                     ///< m/s
   Vec3 angular_velocity = Vec3::Zero();                             ///< rad/s, world frame
-  Vec3 thrust = Vec3::Zero();     ///< own acceleration added to gravity, m/s^2
+  Vec3 thrust = Vec3::Zero();  ///< own acceleration added to gravity, m/s^2
+  /// Later changes of `thrust` (s, m/s^2), times strictly increasing and not before the
+  /// scene's start time (WorldSettings::start_time): BodyDef::thrust_schedule.
+  std::vector<ThrustChange> thrust_schedule;
   double mass = 1.0;              ///< kg (from "mass", or "density" x volume)
   std::optional<double> density;  ///< kg/m^3 when the file gave a density
   double restitution = 1.0;       ///< in [0, 1]
@@ -59,8 +62,10 @@ struct SceneDescription {
   std::string name;               ///< reported by `sparsedyn run` as "preset"
   std::uint64_t seed = 1;         ///< default seed of random generators; reported
   std::optional<double> packing;  ///< informational packing fraction, reported as "density"
-  double duration = 10.0;         ///< simulated seconds `sparsedyn run` advances by default
-  /// The World's settings (container, gravity, broad phase, tolerances).
+  /// Simulated seconds `sparsedyn run` advances by default, from the start time: the run ends
+  /// at EndTime().
+  double duration = 10.0;
+  /// The World's settings (container, gravity, broad phase, tolerances, start time).
   WorldSettings settings;
   /// The distinct shapes; bodies refer to them by index.
   std::vector<SceneShape> shapes;
@@ -71,6 +76,8 @@ struct SceneDescription {
   std::uint32_t AddShape(SceneShape shape);
   /// The number of bodies whose shape is a polyhedron.
   std::size_t PolyhedralBodyCount() const;
+  /// When `sparsedyn run` stops by default: settings.start_time + duration, s.
+  double EndTime() const { return settings.start_time + duration; }
 };
 
 /// A sphere shape of radius `radius` with its spec.
@@ -97,12 +104,32 @@ Result<SceneDescription> ReadScene(const std::filesystem::path& path);
 /// listed with every field, doubles written so that they read back bit for bit.
 std::string FormatScene(const SceneDescription& scene);
 
+/// Rewrites the relative mesh paths of `scene`'s shapes, read relative to `from_dir` (the folder
+/// of the file the scene came from), so that they name the same files relative to `to_dir` (the
+/// folder a scene file is written to): a scene written elsewhere still finds its meshes. Absolute
+/// paths, and every path when the two folders are the same, are kept as they are.
+void RebaseMeshPaths(SceneDescription& scene, const std::filesystem::path& from_dir,
+                     const std::filesystem::path& to_dir);
+
 /// Writes FormatScene(scene) to `path`.
 Status WriteScene(const SceneDescription& scene, const std::filesystem::path& path);
 
 /// The BodyDef of body `index` of the scene (its shape's radius and polyhedron, shared between
 /// the bodies of one shape): what BuildWorld adds, and what other simulators of a scene take.
 BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index);
+
+/// The scene of `world` at its clock, to run on from there (`sparsedyn run
+/// --write-final-scene`): `scene` is what the World was built from and `ids[i]` the handle of
+/// scene.bodies[i] (after BuildWorld, world.IdOf(i)). Every body still in the World, in the
+/// scene's order (removed ones left out), with its state at world.Time() (position, wrapped
+/// into a periodic box; orientation; velocity; angular velocity), its shape (the same spec),
+/// mass or density, restitution and friction, its thrust then and the changes of its
+/// thrust_schedule still to come (time > world.Time()); the settings kept, with start_time =
+/// world.Time(), and the same duration. Valid after AdvanceTo succeeded (events at the clock
+/// all processed). The thrusts come from `scene`: SetThrust calls are not known here, and
+/// bodies added after the build are not in `scene`.
+SceneDescription FinalScene(const SceneDescription& scene, const World& world,
+                            const std::vector<BodyId>& ids);
 
 /// A World holding the scene's bodies, added in order. Nothing is returned half-built: an Error
 /// names the body ("bodies[12]: ...") when the World refuses it (overlap, outside the
