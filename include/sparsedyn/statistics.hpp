@@ -54,11 +54,12 @@ struct Statistics {
 /// the closest-feature walk (walk_cap_hits), the detailed phase's work cap (detail_checkpoints)
 /// and the stall limit (an error from AdvanceTo).
 struct CapCounters {
-  std::uint64_t root_narrowing = 0;         // math: a root bracket still wide after 256 steps
-  std::uint64_t meeting_certification = 0;  // sparse: 90 doublings did not certify a meeting time
-  std::uint64_t impulse_rounds = 0;         // dynamics: 16 impulse rounds left a point approaching
-  std::uint64_t level_crossing = 0;         // narrow: 200 doublings did not reach the tolerance
-  std::uint64_t bisection = 0;              // narrow: a first-within bisection past 4096 steps
+  std::uint64_t root_narrowing = 0;         ///< math: a root bracket still wide after 256 steps
+  std::uint64_t meeting_certification = 0;  ///< sparse: 90 doublings did not certify a meeting time
+  std::uint64_t impulse_rounds = 0;         ///< dynamics: 16 impulse rounds left a point approaching
+  std::uint64_t level_crossing = 0;         ///< narrow: 200 doublings did not reach the tolerance
+  std::uint64_t bisection = 0;              ///< narrow: a first-within bisection past 4096 steps
+  /// Every count equal.
   friend bool operator==(const CapCounters&, const CapCounters&) = default;
 };
 
