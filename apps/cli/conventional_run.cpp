@@ -108,6 +108,11 @@ int RunConventional(const RunOptions& options) {
                       "].thrust_schedule: thrust schedules apply to --method event",
                   2);
     }
+    if (scene->bodies[i].god) {
+      return fail("--method conventional: bodies[" + std::to_string(i) +
+                      "].god: god objects apply to --method event",
+                  2);
+    }
   }
   const ConventionalSettings conventional{.dt = *options.dt, .digits = options.digits.value_or(4)};
   Result<ConventionalWorld> world = Build(*scene, conventional);

@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -57,6 +59,23 @@ struct Drag {
   double quadratic = 0.0;  ///< c2, 1/m
   /// No drag at all: the body's path is the constant-acceleration polynomial of App. F.3.
   bool IsZero() const { return linear == 0.0 && quadratic == 0.0; }
+};
+
+/// One target of a god object's track (App. H.3): be at `position` at `time` (s, absolute),
+/// moving at `velocity` if one is given (otherwise the plan chooses it: docs/dynamics.md,
+/// "God objects").
+struct GodTarget {
+  double time = 0.0;                ///< s
+  Vec3 position = Vec3::Zero();     ///< m, the centre of mass
+  std::optional<Vec3> velocity;     ///< m/s; unset: a sweep through the waypoints
+};
+
+/// A god object (App. H.3): a body driven from outside along `track` with |acceleration| <=
+/// `max_acceleration`; it lags behind a target it cannot reach in time. To other bodies it has
+/// infinite mass (it pushes them, nothing pushes it).
+struct GodDef {
+  double max_acceleration = 1.0;  ///< A, m/s^2, > 0
+  std::vector<GodTarget> track;   ///< times strictly increasing, none before the World's clock
 };
 
 }  // namespace sparsedyn

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -88,9 +89,9 @@ struct WorldSettings {
 /// Checks `settings` (issue #39 part 9): a walled or periodic container with finite bounds of
 /// magnitude <= 1e100 and hi > lo on every axis, known enumerators, finite gravity of magnitude
 /// <= 1e100, contact_tolerance in [0, 0.1], elastic_below_speed in [0, 1e100],
-/// grid_cells_per_body in (0, 1e6] and stall_event_limit > 0. The Error names the field
-/// ("settings.container.hi[2] = ..."). BuildWorld and the presets return it; the World
-/// constructor asserts it.
+/// grid_cells_per_body in (0, 1e6], stall_event_limit > 0 and start_time in [-1e12, 1e12].
+/// The Error names the field ("settings.container.hi[2] = ..."). BuildWorld and the presets
+/// return it; the World constructor asserts it.
 Status ValidateSettings(const WorldSettings& settings);
 
 /// A body: a sphere of `radius`, or the convex polyhedron `shape`.
@@ -113,8 +114,14 @@ struct BodyDef {
   Envelope envelope;                   ///< growth of the bounding sphere beyond the body (App. F)
   /// A static body: fixed where it is placed, of infinite mass, with no events of its own (a
   /// floor, a table, a cushion). Any shape; velocity, spin, thrust and envelope must be zero.
-  /// It may touch other bodies at the start, not overlap them. Not in periodic boxes.
+  /// It may touch other bodies at the start, not overlap them, and may reach beyond a walled
+  /// box's walls. Not in periodic boxes.
   bool is_static = false;
+  /// A god object (App. H.3): driven along this track with bounded acceleration, from
+  /// `position` and `velocity` now; of infinite mass to every other body (mass is ignored), not
+  /// held by walls or statics, passing through other god objects. No thrust, spin or envelope;
+  /// not in periodic boxes.
+  std::optional<GodDef> god;
 };
 
 /// A body's state evaluated from its path at some time.
@@ -189,9 +196,9 @@ class World {
   /// radius or mass <= 0, a magnitude is absurd (beyond 1e100, a radius below 2^-40 of its
   /// coordinates: src/world/hostile_values.hpp), restitution outside [0, 1], friction < 0, the
   /// orientation is not a unit quaternion, an envelope coefficient < 0, a thrust change is not
-  /// later than the one before or comes before the clock, the body lies outside the container,
-  /// it overlaps (polyhedra: touches) a body already present, or it would mix spheres and
-  /// polyhedra in one World.
+  /// later than the one before or comes before the clock, a god object's track is bad
+  /// (ValidateGodTrack's fields, a time before the clock), the body lies outside the container,
+  /// or it overlaps (polyhedra: touches) a body already present.
   Result<BodyId> AddBody(const BodyDef& def);
 
   // --- Changes between AdvanceTo calls, at Time(). Each is checked first: a refused change
@@ -215,6 +222,18 @@ class World {
   /// Sets the body's own acceleration (m/s^2, added to gravity) from now on, and its schedule
   /// of later changes (replacing what was left of the old one).
   Status SetThrust(BodyId id, const Vec3& thrust, const std::vector<ThrustChange>& schedule = {});
+  /// Gives god object `id` a new maximum acceleration and track from now on (its targets not
+  /// before Time()), planned from where it is and how it moves now. SetVelocity, ApplyImpulse,
+  /// SetAngularVelocity and SetThrust refuse a god object; SetPose teleports it, and it goes on
+  /// from there to the targets it had not reached.
+  Status SetGodTrack(BodyId id, const GodDef& god);
+  /// The part of god object `id`'s track not reached by Time() (and its maximum acceleration);
+  /// none for another body.
+  std::optional<GodDef> GodTrackOf(BodyId id) const;
+  /// Whether `id` is a static body.
+  bool IsStatic(BodyId id) const;
+  /// Whether `id` is a god object.
+  bool IsGod(BodyId id) const;
 
   /// Processes every event with time <= t, then sets the clock to t. Fails (clock at the last
   /// processed event) when the event loop stalls, see WorldSettings::stall_event_limit.

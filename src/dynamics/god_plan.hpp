@@ -11,14 +11,6 @@
 
 namespace sparsedyn {
 
-/// One target of a god object's track: be at `position` at `time` (s, absolute), moving at
-/// `velocity` if one is given (otherwise GodPlan chooses it: docs/dynamics.md).
-struct GodTarget {
-  double time = 0.0;
-  Vec3 position = Vec3::Zero();
-  std::optional<Vec3> velocity;
-};
-
 /// One constant-acceleration piece of a plan, for t in [t0, t1) (t1 may be infinite).
 struct GodPiece {
   double t0 = 0.0;

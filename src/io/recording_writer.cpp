@@ -115,7 +115,9 @@ std::pair<RecordingHeader, std::vector<RecordedBody>> DescribeForRecording(const
     auto [it, inserted] =
         shape_of_radius.try_emplace(state.radius, static_cast<std::uint32_t>(header.shapes.size()));
     if (inserted) header.shapes.push_back({RecordingShape::Kind::kSphere, state.radius, {}});
-    bodies.push_back({it->second, 0, state.mass, state.radius});
+    const std::uint32_t flags = (world.IsStatic(world.IdOf(i)) ? kBodyStatic : 0u) |
+                                (world.IsGod(world.IdOf(i)) ? kBodyGod : 0u);
+    bodies.push_back({it->second, flags, state.mass, state.radius});
   }
   return {std::move(header), std::move(bodies)};
 }
@@ -141,7 +143,8 @@ std::pair<RecordingHeader, std::vector<RecordedBody>> DescribeForRecording(
   std::vector<RecordedBody> bodies;
   bodies.reserve(scene.bodies.size());
   for (const SceneBody& body : scene.bodies) {
-    bodies.push_back({body.shape, 0, body.mass, scene.shapes[body.shape].radius});
+    const std::uint32_t flags = (body.is_static ? kBodyStatic : 0u) | (body.god ? kBodyGod : 0u);
+    bodies.push_back({body.shape, flags, body.mass, scene.shapes[body.shape].radius});
   }
   return {std::move(header), std::move(bodies)};
 }

@@ -197,7 +197,7 @@ class SceneParser {
     if (!checker_.Object(
             value, path,
             {"shape", "position", "orientation", "velocity", "angular_velocity", "thrust",
-             "thrust_schedule", "mass", "density", "restitution", "friction", "static"})) {
+             "thrust_schedule", "mass", "density", "restitution", "friction", "static", "god"})) {
       return;
     }
     SceneBody body;
@@ -225,6 +225,7 @@ class SceneParser {
     if (value.contains("thrust_schedule")) {
       ParseThrustSchedule(value["thrust_schedule"], Key(path, "thrust_schedule"), body);
     }
+    if (value.contains("god")) ParseGod(value["god"], Key(path, "god"), body);
     ParseMass(value, path, body);
     if (value.contains("restitution")) {
       if (auto e = checker_.NumberIn(value["restitution"], Key(path, "restitution"), 0, 1)) {
@@ -295,6 +296,67 @@ class SceneParser {
       previous = time;
       body.thrust_schedule.push_back(ThrustChange{*time, *thrust});
     }
+  }
+
+  // {"max_acceleration": A, "track": [{"time": t, "position": [x, y, z], "velocity": [...]}]}:
+  // A > 0, times strictly increasing and not before the start.
+  void ParseGod(const json& value, const std::string& at, SceneBody& body) {
+    if (!checker_.Object(value, at, {"max_acceleration", "track"})) return;
+    GodDef god;
+    if (!value.contains("max_acceleration")) {
+      checker_.Fail(Key(at, "max_acceleration"), "is missing");
+      return;
+    }
+    const std::optional<double> a = checker_.NumberIn(value["max_acceleration"],
+                                                      Key(at, "max_acceleration"), 0, kMaxTime,
+                                                      /*lo_open=*/true);
+    if (!a) return;
+    god.max_acceleration = *a;
+    const std::string track = Key(at, "track");
+    if (!value.contains("track")) {
+      checker_.Fail(track, "is missing");
+      return;
+    }
+    if (!value["track"].is_array()) {
+      checker_.Fail(track, "must be an array of {\"time\": t, \"position\": [x, y, z]}, got " +
+                               json_input::Describe(value["track"]));
+      return;
+    }
+    const json& entries = value["track"];
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+      const std::string entry = Index(track, k);
+      if (!checker_.Object(entries[k], entry, {"time", "position", "velocity"})) return;
+      for (const char* key : {"time", "position"}) {
+        if (!entries[k].contains(key)) checker_.Fail(Key(entry, key), "is missing");
+      }
+      if (!entries[k].contains("time") || !entries[k].contains("position")) return;
+      const std::optional<double> time =
+          checker_.NumberIn(entries[k]["time"], Key(entry, "time"), 0, kMaxTime);
+      const std::optional<Vec3> position =
+          checker_.Vector(entries[k]["position"], Key(entry, "position"));
+      if (!time || !position) return;
+      GodTarget target{*time, *position, std::nullopt};
+      if (entries[k].contains("velocity")) {
+        const std::optional<Vec3> v = checker_.Vector(entries[k]["velocity"], Key(entry, "velocity"));
+        if (!v) return;
+        target.velocity = *v;
+      }
+      if (*time < scene_.settings.start_time) {
+        checker_.Fail(Key(entry, "time"), "must not be before start_time (" +
+                                              json_input::FormatNumber(scene_.settings.start_time) +
+                                              "), got " + json_input::FormatNumber(*time));
+        return;
+      }
+      if (k > 0 && !(*time > god.track.back().time)) {
+        checker_.Fail(Key(entry, "time"), "must be later than " + Index(track, k - 1) +
+                                              ".time (" +
+                                              json_input::FormatNumber(god.track.back().time) +
+                                              "), got " + json_input::FormatNumber(*time));
+        return;
+      }
+      god.track.push_back(target);
+    }
+    body.god = std::move(god);
   }
 
   // "mass" or "density" (not both); neither means 1 kg.

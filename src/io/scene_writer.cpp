@@ -49,6 +49,15 @@ ordered_json BodyJson(const SceneDescription& scene, const SceneBody& body) {
   out["restitution"] = body.restitution;
   out["friction"] = body.friction;
   if (body.is_static) out["static"] = true;
+  if (body.god) {
+    ordered_json track = ordered_json::array();
+    for (const GodTarget& target : body.god->track) {
+      ordered_json entry{{"time", target.time}, {"position", VectorJson(target.position)}};
+      if (target.velocity) entry["velocity"] = VectorJson(*target.velocity);
+      track.push_back(std::move(entry));
+    }
+    out["god"] = {{"max_acceleration", body.god->max_acceleration}, {"track", std::move(track)}};
+  }
   return out;
 }
 
@@ -126,6 +135,9 @@ SceneDescription FinalScene(const SceneDescription& scene, const World& world,
     body.velocity = state.velocity;
     body.angular_velocity = state.angular_velocity;
     RunScheduleTo(body, now);
+    // A god object's targets still ahead; from there a new plan (the move under way is planned
+    // again from its middle, docs/scene-format.md).
+    if (body.god) body.god = world.GodTrackOf(ids[i]);
     out.bodies.push_back(std::move(body));
   }
   return out;
@@ -147,6 +159,7 @@ BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index) {
   def.restitution = body.restitution;
   def.friction = body.friction;
   def.is_static = body.is_static;
+  def.god = body.god;
   return def;
 }
 

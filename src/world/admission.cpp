@@ -7,6 +7,7 @@
 #include "base/format.hpp"
 #include "narrow/point_features.hpp"
 #include "sparsedyn/narrow/closest_features.hpp"
+#include "dynamics/god_plan.hpp"
 #include "world/body_checks.hpp"
 #include "world/hostile_values.hpp"
 #include "world/solid_gap.hpp"
@@ -43,6 +44,9 @@ Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t s
   if (def.is_static) {
     if (std::optional<Error> error = CheckStatic(def, body)) return *error;
   }
+  if (def.god) {
+    if (std::optional<Error> error = CheckGod(def, body)) return *error;
+  }
   if (polyhedron && !def.envelope.IsZero()) {
     return Error{body + "envelopes are for spheres; a polyhedron's path is exact"};
   }
@@ -67,8 +71,12 @@ Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t s
   // A polyhedron's element sphere is its bounding sphere about the centroid.
   accepted.radius = polyhedron ? shape->polyhedron->bounding_radius() : def.radius;
   const Placement placement{def.position, def.orientation.normalized(), shape, accepted.radius,
-                            def.is_static};
-  if (std::optional<Error> error = CheckInside(placement, body)) return *error;
+                            def.is_static, def.god.has_value()};
+  // A static body may reach beyond a walled box's walls (a floor wider than the room): only
+  // moving bodies are kept inside.
+  if (!def.is_static) {
+    if (std::optional<Error> error = CheckInside(placement, body)) return *error;
+  }
   if (std::optional<Error> error = CheckApart(placement, kNoIndex, started, body)) return *error;
   if (std::optional<Error> error = CheckApartFromStatics(placement, body)) return *error;
   return accepted;
@@ -86,10 +94,45 @@ std::optional<Error> Admission::CheckStatic(const BodyDef& def, const std::strin
   return std::nullopt;
 }
 
+std::optional<Error> Admission::CheckGodTrack(const GodDef& god, const std::string& body) const {
+  const std::string at = body + "god.";
+  if (Status track = ValidateGodTrack(god.track, god.max_acceleration); !track) {
+    return Error{at + track.error().message};
+  }
+  if (!god.track.empty() && god.track.front().time < core_.Now()) {
+    return Error{at + "track[0].time " + FormatExact(god.track.front().time) +
+                 " is before the World's clock (" + FormatExact(core_.Now()) + ")"};
+  }
+  // Beyond 1e100 a plan's squares overflow (as hostile_values.hpp refuses for other values).
+  const auto absurd = [](const Vec3& v) { return v.cwiseAbs().maxCoeff() > 1e100; };
+  if (god.max_acceleration > 1e100) return Error{at + "max_acceleration is beyond 1e100"};
+  for (std::size_t k = 0; k < god.track.size(); ++k) {
+    const GodTarget& target = god.track[k];
+    if (std::abs(target.time) > 1e100 || absurd(target.position) ||
+        (target.velocity && absurd(*target.velocity))) {
+      return Error{at + "track[" + std::to_string(k) + "] has a magnitude beyond 1e100"};
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> Admission::CheckGod(const BodyDef& def, const std::string& body) const {
+  if (std::optional<Error> error = CheckGodTrack(*def.god, body)) return error;
+  const std::string what = body + "a god object ";
+  if (def.is_static) return Error{what + "cannot be static (it moves as it is driven)"};
+  if (core_.periodic) return Error{what + "cannot be in a periodic box (not supported)"};
+  if (!def.angular_velocity.isZero(0.0)) return Error{what + "has no angular_velocity (give zero)"};
+  if (!def.thrust.isZero(0.0) || !def.thrust_schedule.empty()) {
+    return Error{what + "has no thrust or thrust_schedule (its track drives it)"};
+  }
+  if (!def.envelope.IsZero()) return Error{what + "has no envelope (its path is exact)"};
+  return std::nullopt;
+}
+
 std::optional<Error> Admission::CheckApartFromStatics(const Placement& placement,
                                                       const std::string& body) const {
   const StaticBodies& statics = core_.bodies.statics;
-  if (statics.Empty()) return std::nullopt;
+  if (statics.Empty() || placement.is_god) return std::nullopt;
   const Solid solid{placement.shape, placement.radius,
                     Pose{placement.orientation, placement.position}};
   const Aabb box = placement.shape != nullptr
@@ -122,7 +165,8 @@ Status Admission::CheckPose(std::uint32_t i, std::uint32_t slot, const Vec3& pos
   }
   const BodyStore& bodies = core_.bodies;
   const BodyShape* shape = bodies.IsPolyhedron(i) ? &bodies.rigid.ShapeOf(i) : nullptr;
-  const Placement placement{position, orientation.normalized(), shape, bodies.materials.Radius(i)};
+  const Placement placement{position, orientation.normalized(), shape, bodies.materials.Radius(i),
+                            false, bodies.IsGod(i)};
   if (std::optional<Error> error = CheckInside(placement, body)) return *error;
   if (std::optional<Error> error = CheckApart(placement, i, started, body)) return *error;
   if (std::optional<Error> error = CheckApartFromStatics(placement, body)) return *error;
@@ -221,6 +265,7 @@ std::optional<Error> Admission::CheckApart(const Placement& placement, std::uint
     const double reach = placement.radius + bodies.materials.Radius(j);
     const std::uint32_t slot = bodies.ids.PublicOf(j);
     if (found && slot >= *found) return;
+    if (placement.is_god && bodies.IsGod(j)) return;  // god objects pass each other
     const BodyShape* shape_j = bodies.IsPolyhedron(j) ? &bodies.rigid.ShapeOf(j) : nullptr;
     if (placement.shape == nullptr && shape_j == nullptr) {
       // Spheres: overlapping beyond round-off (a static sphere too).

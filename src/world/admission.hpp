@@ -40,6 +40,9 @@ class Admission {
   /// `orientation` now: inside the container, apart from every other body.
   Status CheckPose(std::uint32_t i, std::uint32_t slot, const Vec3& position,
                    const Eigen::Quaterniond& orientation, bool started) const;
+  /// A god object's maximum acceleration and track (ValidateGodTrack, no magnitude beyond
+  /// 1e100, not before the clock); the error starts with `body`.
+  std::optional<Error> CheckGodTrack(const GodDef& god, const std::string& body) const;
   /// A body accepted before the start, at `position` with element radius `radius`.
   void NoteAdded(const Vec3& position, double radius) { overlap_index_.Add(position, radius); }
   /// The start: the index is no longer needed.
@@ -55,9 +58,13 @@ class Admission {
     const BodyShape* shape;
     double radius;
     bool is_static = false;  // may touch other bodies (not overlap them)
+    bool is_god = false;     // may overlap other god objects and statics
   };
   /// What a static body may not have (a motion of any kind, an envelope, a periodic box).
   std::optional<Error> CheckStatic(const BodyDef& def, const std::string& body) const;
+  /// A god object's definition: its track (ValidateGodTrack, not before the clock) and what it
+  /// may not have (thrust, an envelope, a spin, static, a periodic box).
+  std::optional<Error> CheckGod(const BodyDef& def, const std::string& body) const;
   /// The static bodies `placement` overlaps (touching is allowed with a static).
   std::optional<Error> CheckApartFromStatics(const Placement& placement,
                                              const std::string& body) const;

@@ -18,12 +18,13 @@ void BodyStore::Permute(const std::vector<std::uint32_t>& old_of_new) {
   rigid.Permute(permute);
   envelopes.Permute(permute);
   thrusts.Permute(permute);
+  gods.Permute(permute);
   ids.Permute(permute);
 }
 
 std::size_t BodyStore::MemoryBytes() const {
   return paths.MemoryBytes() + materials.MemoryBytes() + rigid.MemoryBytes() +
-         envelopes.MemoryBytes() + thrusts.MemoryBytes() + ids.MemoryBytes() +
+         envelopes.MemoryBytes() + thrusts.MemoryBytes() + gods.MemoryBytes() + ids.MemoryBytes() +
          statics.MemoryBytes();
 }
 

@@ -14,6 +14,7 @@
 #include "world/body_ids.hpp"
 #include "world/body_materials.hpp"
 #include "world/element_paths.hpp"
+#include "world/god_bodies.hpp"
 #include "world/rigid_bodies.hpp"
 #include "world/static_bodies.hpp"
 #include "world/thrust_schedules.hpp"
@@ -64,13 +65,14 @@ struct BodyStore {
   /// Whether some pair of elements engages when they meet (Engages): else no engagement
   /// can exist, and the hot paths skip looking for one.
   bool EngagesOnMeet() const {
-    return envelopes.Any() || rigid.AnyPolyhedron() || !statics.Empty();
+    return envelopes.Any() || rigid.AnyPolyhedron() || !statics.Empty() || gods.Any();
   }
   /// Whether every element is a sphere without an envelope on a straight line, and nothing
   /// changes a path but collisions.
   bool AllOnStraightLines() const {
     const Accelerations& a = paths.accelerations();
-    return !envelopes.Any() && !rigid.AnyPolyhedron() && !thrusts.Any() && a.Uniform() &&
+    return !envelopes.Any() && !rigid.AnyPolyhedron() && !thrusts.Any() && !gods.Any() &&
+           a.Uniform() &&
            a.UniformValue().isZero(0.0);
   }
 
@@ -78,14 +80,18 @@ struct BodyStore {
     return RigidPath{paths.PathOf(i), rigid.Orientation0(i), rigid.Omega(i)};
   }
   bool IsPolyhedron(std::uint32_t i) const { return rigid.IsPolyhedron(i); }
+  bool IsGod(std::uint32_t i) const { return gods.IsGod(i); }
   bool HasEnvelope(std::uint32_t i) const {
     return envelopes.Any() && !envelopes.Of(i).IsZero();
   }
   /// Whether the element spheres of i and j, when they meet, are engaged and watched by the
   /// detailed phase (a polyhedron, or a sphere whose envelope is wider than the body); else
-  /// the meeting is the contact of two spheres.
+  /// the meeting is the contact of two spheres. Two god objects are engaged too, in a pair
+  /// that never touches (PairKind::kInert), so that the sparse phase skips them while their
+  /// spheres overlap.
   bool Engages(std::uint32_t i, std::uint32_t j) const {
-    return IsPolyhedron(i) || IsPolyhedron(j) || HasEnvelope(i) || HasEnvelope(j);
+    return IsPolyhedron(i) || IsPolyhedron(j) || HasEnvelope(i) || HasEnvelope(j) ||
+           (IsGod(i) && IsGod(j));
   }
   /// Body i's inertia per unit mass in its body frame (a solid sphere: 2/5 r^2).
   Eigen::Matrix3d UnitInertia(std::uint32_t i) const {
@@ -114,6 +120,7 @@ struct BodyStore {
   RigidBodies rigid;
   Envelopes envelopes;
   ThrustSchedules thrusts;
+  GodBodies gods;
   BodyIds ids;
   StaticBodies statics;  // not elements: no path, no queue entry
 };

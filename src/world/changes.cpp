@@ -37,6 +37,15 @@ Result<std::uint32_t> World::Impl::ElementOf(BodyId id, const char* call) const 
   return core_.bodies.ids.InternalOf(id.index);
 }
 
+Result<std::uint32_t> World::Impl::MovableOf(BodyId id, const char* call) const {
+  Result<std::uint32_t> element = ElementOf(id, call);
+  if (element && core_.bodies.IsGod(*element)) {
+    return Error{std::string(call) + ": " + Handle(id) +
+                 " is a god object (nothing pushes it; SetGodTrack steers it)"};
+  }
+  return element;
+}
+
 void World::Impl::AfterChange(std::uint32_t i) {
   if (!started_) return;  // the start predicts everything
   BodyStore& bodies = core_.bodies;
@@ -85,7 +94,7 @@ Status World::Impl::RemoveBody(BodyId id) {
 }
 
 Status World::Impl::SetVelocity(BodyId id, const Vec3& velocity) {
-  Result<std::uint32_t> element = ElementOf(id, "SetVelocity");
+  Result<std::uint32_t> element = MovableOf(id, "SetVelocity");
   if (!element) return element.error();
   if (std::optional<Error> error = CheckFinite(velocity, "SetVelocity", "velocity")) return *error;
   changes_.SetVelocity(*element, velocity);
@@ -94,7 +103,7 @@ Status World::Impl::SetVelocity(BodyId id, const Vec3& velocity) {
 }
 
 Status World::Impl::SetAngularVelocity(BodyId id, const Vec3& angular_velocity) {
-  Result<std::uint32_t> element = ElementOf(id, "SetAngularVelocity");
+  Result<std::uint32_t> element = MovableOf(id, "SetAngularVelocity");
   if (!element) return element.error();
   if (std::optional<Error> error =
           CheckFinite(angular_velocity, "SetAngularVelocity", "angular_velocity")) {
@@ -109,7 +118,7 @@ Status World::Impl::SetAngularVelocity(BodyId id, const Vec3& angular_velocity) 
 }
 
 Status World::Impl::ApplyImpulse(BodyId id, const Vec3& impulse, const Vec3& point) {
-  Result<std::uint32_t> element = ElementOf(id, "ApplyImpulse");
+  Result<std::uint32_t> element = MovableOf(id, "ApplyImpulse");
   if (!element) return element.error();
   if (std::optional<Error> error = CheckFinite(impulse, "ApplyImpulse", "impulse")) return *error;
   if (std::optional<Error> error = CheckFinite(point, "ApplyImpulse", "point")) return *error;
@@ -141,6 +150,8 @@ Status World::Impl::SetPose(BodyId id, const Vec3& position,
     return Error{"SetPose: " + placed.error().message};
   }
   changes_.SetPose(i, position, orientation.normalized());
+  // A god object teleported goes on to the targets it had not reached, from its new place.
+  if (core_.bodies.IsGod(i)) Replan(i, core_.bodies.gods.Of(i).Remaining(core_.Now()));
   // The body's former partners predict again and its new place is searched (App. H.3): a
   // restart does both, and engages what overlaps its element there.
   if (started_) {
@@ -153,7 +164,7 @@ Status World::Impl::SetPose(BodyId id, const Vec3& position,
 
 Status World::Impl::SetThrust(BodyId id, const Vec3& thrust,
                               const std::vector<ThrustChange>& schedule) {
-  Result<std::uint32_t> element = ElementOf(id, "SetThrust");
+  Result<std::uint32_t> element = MovableOf(id, "SetThrust");
   if (!element) return element.error();
   if (std::optional<Error> error = CheckFinite(thrust, "SetThrust", "thrust")) return *error;
   if (std::optional<Error> error = CheckSchedule(schedule, core_.Now(), "SetThrust: ")) {
@@ -167,10 +178,36 @@ Status World::Impl::SetThrust(BodyId id, const Vec3& thrust,
   return Status::Ok();
 }
 
-void World::Impl::HandleThrustChange(std::uint32_t i) {
+Status World::Impl::SetGodTrack(BodyId id, const GodDef& god) {
+  Result<std::uint32_t> element = ElementOf(id, "SetGodTrack");
+  if (!element) return element.error();
+  const std::uint32_t i = *element;
+  if (!core_.bodies.IsGod(i)) {
+    return Error{"SetGodTrack: " + Handle(id) + " is not a god object (give it one in AddBody)"};
+  }
+  if (std::optional<Error> error = admission_.CheckGodTrack(god, "SetGodTrack: ")) return *error;
+  Replan(i, god);
+  AfterChange(i);
+  return Status::Ok();
+}
+
+void World::Impl::Replan(std::uint32_t i, const GodDef& god) {
+  const double now = core_.Now();
+  const Path path = core_.bodies.paths.PathOf(i);
+  GodPlan plan(now, path.PositionAt(now), path.VelocityAt(now), god.track, god.max_acceleration);
+  const Vec3 a = plan.PieceAt(now).a;
+  core_.bodies.gods.Replace(i, GodBodies::God{god, std::move(plan)});
+  changes_.SetAcceleration(i, a);
+}
+
+void World::Impl::HandleBodyTimer(std::uint32_t i) {
   BodyStore& bodies = core_.bodies;
-  const Vec3 thrust = bodies.thrusts.TakeNext(i);
-  changes_.SetAcceleration(i, core_.settings.gravity + thrust);
+  if (bodies.IsGod(i)) {
+    // The next piece of its plan: the same place and velocity, a new acceleration.
+    changes_.SetAcceleration(i, bodies.gods.PlanOf(i).PieceAt(core_.Now()).a);
+  } else {
+    changes_.SetAcceleration(i, core_.settings.gravity + bodies.thrusts.TakeNext(i));
+  }
   sparse_.PredictFull(i);
   detailed_.PredictEngagementsOf(i);
 }

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "world/detailed_phase.hpp"
 
+#include "math/event_time.hpp"
+#include "sparse/meeting.hpp"
+#include "sparsedyn/assert.hpp"
 #include "world/polyhedron_contacts.hpp"
 #include "world/sphere_contacts.hpp"
 #include "world/sphere_polyhedron_contacts.hpp"
@@ -10,6 +13,7 @@ namespace sparsedyn {
 
 PairKind DetailedPhase::KindOf(std::uint32_t a, std::uint32_t b) const {
   if (StaticBodies::IsKey(b)) return PairKind::kStatic;
+  if (core_.bodies.IsGod(a) && core_.bodies.IsGod(b)) return PairKind::kInert;
   const bool poly_a = core_.bodies.IsPolyhedron(a), poly_b = core_.bodies.IsPolyhedron(b);
   if (poly_a && poly_b) return PairKind::kPolyhedra;
   if (poly_a || poly_b) return PairKind::kSpherePolyhedron;
@@ -38,7 +42,21 @@ void DetailedPhase::Predict(std::uint32_t k) {
     case PairKind::kStatic:
       statics_->PredictEngagement(k);
       break;
+    case PairKind::kInert:
+      PredictSeparation(k);
+      break;
   }
+}
+
+void DetailedPhase::PredictSeparation(std::uint32_t k) {
+  Engagements::Engagement& e = engagements_[k];
+  const double now = core_.Now();
+  e.contact_next = false;
+  e.checkpoint = false;
+  const BodyStore& bodies = core_.bodies;
+  Schedule(k, EventTime(now, sparsedyn::PredictSeparation(bodies.MoverOf(e.a, now),
+                                                          bodies.MoverOf(e.b, now),
+                                                          Vec3::Zero())));
 }
 
 void DetailedPhase::Handle(std::uint32_t k) {
@@ -66,6 +84,8 @@ void DetailedPhase::Handle(std::uint32_t k) {
     case PairKind::kStatic:
       statics_->HandleContact(k);
       break;
+    case PairKind::kInert:
+      SPARSEDYN_ASSERT(false, "an inert pair has no contact");
   }
 }
 

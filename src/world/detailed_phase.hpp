@@ -22,6 +22,7 @@ enum class PairKind : std::uint8_t {
   kPolyhedra,   // two convex polyhedra: closest-feature tracking (§5.2)
   kSpherePolyhedron,  // a sphere and a convex polyhedron: the feature closest to the centre
   kStatic,      // a moving body and a static one (b is the static's key)
+  kInert,       // two god objects: both of infinite mass, they pass through each other
 };
 
 /// The detailed phase (§3.3, §5.2): the engaged pairs, each with one slot in the engagement
@@ -70,6 +71,9 @@ class DetailedPhase {
   std::size_t MemoryBytes() const { return queue_.MemoryBytes(); }
 
  private:
+  /// An inert pair's only event: its element spheres separate.
+  void PredictSeparation(std::uint32_t k);
+
   WorldCore& core_;
   SparsePhase& sparse_;
   SphereContacts* spheres_ = nullptr;

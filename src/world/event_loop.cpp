@@ -70,7 +70,7 @@ void World::Impl::Dispatch(const QueueTop& top, bool engagement) {
       sparse_.HandleCrossing(top.slot);
       break;
     case EventKind::kBodyTimer:
-      HandleThrustChange(top.slot);
+      HandleBodyTimer(top.slot);
       break;
     case EventKind::kStaticMeet:
       HandleStaticMeet(top.slot);

@@ -76,6 +76,9 @@ Status ValidateSettings(const WorldSettings& settings) {
     return s;
   }
   if (settings.stall_event_limit == 0) return Error{"settings.stall_event_limit must be > 0"};
+  // The clock starts there: scene files allow [0, 1e12]; the library any finite time whose
+  // magnitude leaves the clock a resolution (CheckClockResolution says more per World).
+  if (Status s = CheckNumber("start_time", settings.start_time, -1e12, 1e12, false); !s) return s;
   return Status::Ok();
 }
 

@@ -89,7 +89,9 @@ Event SparsePhase::FinishPrediction(std::uint32_t i, const Candidate& best) {
   const double t0 = core_.bodies.paths.Start(i).t0;
   const Mover m0 = core_.bodies.BodyMoverOf(i, t0);
   const bool polyhedra = core_.bodies.IsPolyhedron(i);
-  if (!polyhedra) {  // a polyhedron meets the walls after its cell crossing is known
+  // A god object goes where it is driven: walls and statics do not stop it.
+  const bool god = core_.bodies.IsGod(i);
+  if (!polyhedra && !god) {  // a polyhedron meets the walls after its cell crossing is known
     std::uint8_t wall = 0;
     const double wall_time = std::max(now, EventTime(t0, PredictWall(m0, wall)));
     if (wall_time < event.time) {
@@ -105,12 +107,13 @@ Event SparsePhase::FinishPrediction(std::uint32_t i, const Candidate& best) {
     event = Event{crossing_time, EventKind::kCellCrossing,
                   static_cast<std::uint8_t>(axis * 2 + (direction > 0 ? 1 : 0)), kNoIndex, 0};
   }
-  if (!core_.bodies.statics.Empty()) event = PredictStaticEntry(i, event);
+  if (!core_.bodies.statics.Empty() && !god) event = PredictStaticEntry(i, event);
   // The walls are the detailed phase's business for a polyhedron, and only up to the element's
   // next event (after which it predicts again).
-  if (polyhedra && core_.Walled()) event = walls_->PredictPolyhedron(i, event);
-  // A change of its thrust at a given time (its schedule) is the body's own event.
-  const double timer = core_.bodies.thrusts.NextTime(i);
+  if (polyhedra && !god && core_.Walled()) event = walls_->PredictPolyhedron(i, event);
+  // A change of its thrust at a given time (its schedule), or of a god object's piece, is the
+  // body's own event.
+  const double timer = god ? core_.bodies.gods.NextSwitch(i, now) : core_.bodies.thrusts.NextTime(i);
   if (timer < event.time) event = Event{MaxOf(now, timer), EventKind::kBodyTimer, 0, kNoIndex, 0};
   return event;
 }

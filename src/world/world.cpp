@@ -44,10 +44,18 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   if (def.shape != nullptr || !def.angular_velocity.isZero(0.0) || def.friction > 0) {
     bodies.rigid.Track(index);
   }
+  // A god object follows its plan from here (not gravity): its path is the plan's piece now,
+  // and its mass is infinite to every other body.
+  std::optional<GodBodies::God> god;
+  if (def.god) {
+    god.emplace(GodBodies::God{*def.god, GodPlan(now, def.position, def.velocity, def.god->track,
+                                                 def.god->max_acceleration)});
+  }
   bodies.paths.Append(PathStart{def.position, def.velocity, now},
-                      core_.settings.gravity + def.thrust);
+                      god ? god->plan.PieceAt(now).a : core_.settings.gravity + def.thrust);
   if (!started_) admission_.NoteAdded(def.position, radius);
-  bodies.materials.Append(Material{radius, 1.0 / def.mass, def.restitution, def.friction});
+  bodies.materials.Append(
+      Material{radius, god ? 0.0 : 1.0 / def.mass, def.restitution, def.friction});
   if (bodies.rigid.Tracked()) {
     std::uint32_t shape = accepted->shape;
     if (accepted->new_shape) shape = bodies.rigid.shapes().Insert(std::move(*accepted->new_shape));
@@ -56,6 +64,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   }
   bodies.envelopes.Append(index, def.envelope);
   bodies.thrusts.Append(index, def.thrust_schedule);
+  bodies.gods.Append(index, std::move(god));
   const BodyId id = bodies.ids.Add(index);
   sparse_.queue().Resize(index + 1);  // the element's slot and prediction
   const bool larger = radius > max_radius_;
@@ -67,7 +76,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
     // rebuild.
     if (larger || (bodies.envelopes.Any() && sparse_.grid()) ||
         (bodies.paths.StraightLines() && !bodies.AllOnStraightLines()) ||
-        bodies.IsPolyhedron(index) || bodies.HasEnvelope(index)) {
+        bodies.IsPolyhedron(index) || bodies.HasEnvelope(index) || bodies.IsGod(index)) {
       Start();
     } else {
       sparse_.AddElement(index);
@@ -155,7 +164,7 @@ BodyState World::Impl::StateAt(std::uint32_t i, double t) const {
                   path.VelocityAt(t),
                   path.a,
                   bodies.materials.Radius(i),
-                  1.0 / bodies.materials.InvMass(i),
+                  bodies.IsGod(i) ? kInfinity : 1.0 / bodies.materials.InvMass(i),
                   sparse_.PredictionOf(i).version};
   if (bodies.rigid.Tracked()) {
     state.orientation = bodies.RigidPathOf(i).OrientationAt(t).normalized();
@@ -170,6 +179,7 @@ double World::Impl::KineticEnergy() const {
   const double now = core_.Now();
   double energy = 0;
   for (const std::uint32_t i : bodies.ids.InPublicOrder()) {
+    if (bodies.IsGod(i)) continue;  // of infinite mass: left out of the sums
     const double inv_mass = bodies.materials.InvMass(i);
     energy += 0.5 / inv_mass * bodies.paths.PathOf(i).VelocityAt(now).squaredNorm();
     if (bodies.rigid.Tracked()) {
@@ -186,6 +196,7 @@ Vec3 World::Impl::AngularMomentum() const {
   const double now = core_.Now();
   Vec3 momentum = Vec3::Zero();
   for (const std::uint32_t i : bodies.ids.InPublicOrder()) {
+    if (bodies.IsGod(i)) continue;
     const Path path = bodies.paths.PathOf(i);
     const double inv_mass = bodies.materials.InvMass(i);
     momentum += path.PositionAt(now).cross(path.VelocityAt(now)) / inv_mass;
@@ -202,6 +213,7 @@ Vec3 World::Impl::Momentum() const {
   const BodyStore& bodies = core_.bodies;
   Vec3 momentum = Vec3::Zero();
   for (const std::uint32_t i : bodies.ids.InPublicOrder()) {
+    if (bodies.IsGod(i)) continue;
     momentum += bodies.paths.PathOf(i).VelocityAt(core_.Now()) / bodies.materials.InvMass(i);
   }
   return momentum;
@@ -222,6 +234,19 @@ World& World::operator=(World&&) noexcept = default;
 
 Result<BodyId> World::AddBody(const BodyDef& def) { return impl_->AddBody(def); }
 Status World::AdvanceTo(double t) { return impl_->AdvanceTo(t); }
+Status World::SetGodTrack(BodyId id, const GodDef& god) { return impl_->SetGodTrack(id, god); }
+std::optional<GodDef> World::GodTrackOf(BodyId id) const {
+  if (!IsGod(id)) return std::nullopt;
+  const BodyIds& ids = impl_->core_.bodies.ids;
+  return impl_->core_.bodies.gods.Of(ids.InternalOf(id.index)).Remaining(Time());
+}
+bool World::IsStatic(BodyId id) const {
+  return IsValid(id) && impl_->core_.bodies.ids.IsStaticSlot(id.index);
+}
+bool World::IsGod(BodyId id) const {
+  const BodyIds& ids = impl_->core_.bodies.ids;
+  return IsValid(id) && !ids.IsStaticSlot(id.index) && impl_->core_.bodies.IsGod(ids.InternalOf(id.index));
+}
 Status World::RemoveBody(BodyId id) { return impl_->RemoveBody(id); }
 Status World::SetVelocity(BodyId id, const Vec3& velocity) {
   return impl_->SetVelocity(id, velocity);

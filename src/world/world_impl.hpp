@@ -51,6 +51,7 @@ class World::Impl {
   Status ApplyImpulse(BodyId id, const Vec3& impulse, const Vec3& point);
   Status SetPose(BodyId id, const Vec3& position, const Eigen::Quaterniond& orientation);
   Status SetThrust(BodyId id, const Vec3& thrust, const std::vector<ThrustChange>& schedule);
+  Status SetGodTrack(BodyId id, const GodDef& god);
 
   // --- the event loop (event_loop.cpp) ---
   Status AdvanceTo(double t);
@@ -62,10 +63,15 @@ class World::Impl {
   /// AdvanceTo, and AddBody while running when the broad phase or the fast forms must change).
   void Start();
   void Dispatch(const QueueTop& top, bool engagement);
-  /// Body i's thrust changes as its schedule says (a kBodyTimer event).
-  void HandleThrustChange(std::uint32_t i);
+  /// Body i's own event (kBodyTimer): its thrust changes as its schedule says, or a god
+  /// object goes on to its plan's next piece.
+  void HandleBodyTimer(std::uint32_t i);
+  /// God i's plan from now, from where it is, through `god` (checked).
+  void Replan(std::uint32_t i, const GodDef& god);
   /// The element of `id`, or an error naming the call and the handle.
   Result<std::uint32_t> ElementOf(BodyId id, const char* call) const;
+  /// ElementOf for changes that push a body: refused for a god object.
+  Result<std::uint32_t> MovableOf(BodyId id, const char* call) const;
   /// After a change of body i's path between runs: i predicts again (and its engagements), or
   /// everything does when the change ends the fast forms of straight lines.
   void AfterChange(std::uint32_t i);

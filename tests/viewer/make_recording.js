@@ -177,7 +177,7 @@ export function EncodeRecording(fixture, {version = 1, end = true} = {}) {
   w.bytes(header);
   for (const body of fixture.bodies) {
     w.u32(body.shape);
-    w.u32(0);
+    w.u32(body.flags ?? 0);
     w.f64(body.mass, body.bounding_radius);
   }
   // Segments and collisions merged by time; segments first at equal times (format rule).

@@ -6,7 +6,8 @@ import test from 'node:test';
 
 import {FindSegment, SegmentCursors, EvalPosition, EvalOrientation, WrapPosition, BodyState}
   from '../../viewer/src/paths.js';
-import {ParseRecording, RecordingError} from '../../viewer/src/recording.js';
+import {KindColor} from '../../viewer/src/colormap.js';
+import {ParseRecording, RecordingError, kBodyGod, kBodyStatic} from '../../viewer/src/recording.js';
 import {EncodeRecording, MakeFixture, SegmentOrientation, SegmentPosition}
   from './make_recording.js';
 
@@ -38,6 +39,24 @@ test('an accelerated segment evaluates to the hand-computed position', () => {
   assert.equal(rec.bodies.mass[0], 2);
   assert.equal(rec.end_time, 5);
   assert.equal(rec.truncated, null);
+});
+
+test('static bodies and god objects are read from the body flags and drawn in their colours', () => {
+  const fixture = OneBody({body: 0, t0: 0, position: [0, 0, 0], velocity: [1, 0, 0]});
+  fixture.header.bodies = 3;
+  fixture.bodies = [{shape: 0, mass: 1, bounding_radius: 1, flags: kBodyGod},
+                    {shape: 0, mass: 1, bounding_radius: 1, flags: kBodyStatic},
+                    {shape: 0, mass: 1, bounding_radius: 1}];
+  fixture.segments = [0, 1, 2].map((body) =>
+    ({body, t0: 0, position: [3 * body, 0, 0], velocity: [0, 0, 0]}));
+  const rec = ParseRecording(EncodeRecording(fixture));
+  assert.deepEqual(Array.from(rec.bodies.flags), [kBodyGod, kBodyStatic, 0]);
+  const god = [0, 0, 0];
+  const fixed = [0, 0, 0];
+  assert.equal(KindColor(rec.bodies.flags[0], god, 0), true);
+  assert.equal(KindColor(rec.bodies.flags[1], fixed, 0), true);
+  assert.equal(KindColor(rec.bodies.flags[2], [0, 0, 0], 0), false);
+  assert.notDeepEqual(god, fixed);
 });
 
 test('a spin of pi about z for one second turns identity into (0, 0, 0, 1)', () => {

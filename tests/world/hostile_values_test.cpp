@@ -84,6 +84,9 @@ TEST(SettingsValidation, EachBadSettingIsNamed) {
   expect_named({.elastic_below_speed = std::nan("")}, "elastic_below_speed");
   expect_named({.grid_cells_per_body = 0}, "grid_cells_per_body");
   expect_named({.stall_event_limit = 0}, "stall_event_limit");
+  expect_named({.start_time = std::nan("")}, "start_time");
+  expect_named({.start_time = std::numeric_limits<double>::infinity()}, "start_time");
+  expect_named({.start_time = 1e300}, "start_time");
 }
 
 TEST(SettingsValidation, BuildWorldReturnsTheSettingsError) {

@@ -236,5 +236,31 @@ TEST(StaticBodies, MayTouchAtTheStartButNotOverlapAndNeverMove) {
   EXPECT_NE(in_torus.error().message.find("periodic"), std::string::npos);
 }
 
+TEST(StaticBodies, ASlabWiderThanTheWalledBoxIsTheFloor) {
+  // A 100 m slab in a 4 m box: it reaches beyond the walls, and a ball dropped from 1 m above
+  // its top bounces off it at sqrt(2 g h), never reaching the wall below it.
+  WorldSettings settings;
+  settings.container = Container::WalledBox(Vec3(-2, -2, 0), Vec3(2, 2, 4));
+  settings.gravity = Vec3(0, 0, -9.81);
+  World world(settings);
+  BodyDef slab;
+  slab.shape = Box(Vec3(50, 50, 0.5));
+  slab.position = Vec3(0, 0, 0.5);
+  ASSERT_TRUE(world.AddBody(Static(slab)));
+  BodyDef ball;
+  ball.radius = 0.25;
+  ball.position = Vec3(0.3, 0.1, 2.25);
+  const BodyId id = world.AddBody(ball).value();
+  std::vector<CollisionEvent> hits;
+  world.OnCollision([&](const CollisionEvent& c) { hits.push_back(c); });
+  const double fall = std::sqrt(2 * 1.0 / 9.81);
+  ASSERT_TRUE(world.AdvanceTo(fall + 0.01));
+  ASSERT_EQ(hits.size(), 1u);
+  EXPECT_EQ(hits[0].wall, -1) << "the slab, not the wall";
+  EXPECT_NEAR(hits[0].time, fall, 1e-8);
+  EXPECT_NEAR(world.StateAt(id, hits[0].time).velocity.z(), 9.81 * fall, 1e-7);
+  EXPECT_TRUE(world.Validate());
+}
+
 }  // namespace
 }  // namespace sparsedyn

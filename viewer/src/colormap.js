@@ -23,6 +23,24 @@ export function SpeedColor(speed, max_speed, out, at) {
   out[at + 2] = a[2] + f * (b[2] - a[2]);
 }
 
+// Bodies that are not coloured by speed: statics stay grey, god objects (driven from outside)
+// a pink that the ramp never takes.
+const kStaticColor = [0.30, 0.30, 0.34];
+const kGodColor = [1.00, 0.25, 0.65];
+
+/**
+ * Writes the colour of a static body or god object (RecordedBody flags: bit 0 static, bit 1
+ * god) into out[at .. at+2] and returns true; false for any other body.
+ */
+export function KindColor(flags, out, at) {
+  const c = (flags & 2) !== 0 ? kGodColor : (flags & 1) !== 0 ? kStaticColor : null;
+  if (c === null) return false;
+  out[at] = c[0];
+  out[at + 1] = c[1];
+  out[at + 2] = c[2];
+  return true;
+}
+
 /** CSS gradient of the same ramp, for the legend. */
 export function RampCss() {
   const srgb = (c) => Math.round(255 * Math.pow(c, 1 / 2.2));

@@ -2,7 +2,7 @@
 // Puts every body where its path says it is at the clock's time: per frame, one segment lookup
 // (a cursor step), one polynomial evaluation and one quaternion per body, written straight into
 // the instance buffers. Collisions near the current time flash their two bodies.
-import {SpeedColor, SpeedScale} from './colormap.js';
+import {KindColor, SpeedColor, SpeedScale} from './colormap.js';
 import {SegmentCursors, EvalVelocity, EvalOrientation, WrapPosition} from './paths.js';
 
 /** At most this many recent collisions flash at once (a dense gas has many per frame). */
@@ -114,7 +114,9 @@ export class Player {
       this.position[3 * i + 2] = p[2];
       for (let k = 0; k < 4; ++k) this.orientation[4 * i + k] = q[k];
       WriteMatrix(matrices, 16 * slot, q, p);
-      SpeedColor(speed, this.speed_scale, colors, 3 * slot);
+      if (!KindColor(this.recording.bodies.flags[i], colors, 3 * slot)) {
+        SpeedColor(speed, this.speed_scale, colors, 3 * slot);
+      }
     }
   }
 

@@ -105,22 +105,27 @@ function CheckHeader(header) {
   header.start_time ??= 0;
 }
 
+/** RecordedBody flags (docs/recording-format.md): a static body, a god object. */
+export const kBodyStatic = 1;
+export const kBodyGod = 2;
+
 function ReadBodies(reader, header) {
   const n = header.bodies;
   reader.need(n * kBodyRecordBytes, 'body records');
   const shape = new Uint32Array(n);
   const mass = new Float64Array(n);
   const bounding_radius = new Float64Array(n);
+  const flags = new Uint32Array(n);
   for (let i = 0; i < n; ++i) {
     shape[i] = reader.u32();
-    reader.u32(); // flags, reserved
+    flags[i] = reader.u32(); // kBodyStatic, kBodyGod
     mass[i] = reader.f64();
     bounding_radius[i] = reader.f64();
     if (shape[i] >= header.shapes.length) {
       throw new RecordingError(`body ${i}: shape index ${shape[i]} is out of range`);
     }
   }
-  return {shape, mass, bounding_radius};
+  return {shape, mass, bounding_radius, flags};
 }
 
 // One record's fixed size after its tag and flags, given the flags (format table).
@@ -234,7 +239,7 @@ function FillRecords(reader, stop, segments, collisions) {
 
 /**
  * Parses a recording from an ArrayBuffer (or a typed array view of one).
- * Returns {header, bodies: {count, shape, mass, bounding_radius}, segments, collisions,
+ * Returns {header, bodies: {count, shape, mass, bounding_radius, flags}, segments, collisions,
  * start_time, end_time, truncated}; `truncated` is null for a complete file, else a message
  * (the tables then hold what was readable). Throws RecordingError for a file that is not a
  * readable recording.

@@ -55,10 +55,15 @@ struct RecordingHeader {
   double end_time = 0.0;  ///< the time the run was asked to reach
 };
 
+/// RecordedBody::flags bit 0: a static body (it never moves).
+inline constexpr std::uint32_t kBodyStatic = 1;
+/// RecordedBody::flags bit 1: a god object (driven from outside, infinite mass).
+inline constexpr std::uint32_t kBodyGod = 2;
+
 /// A body record: static data of one body.
 struct RecordedBody {
   std::uint32_t shape = 0;       ///< index into RecordingHeader::shapes
-  std::uint32_t flags = 0;       ///< reserved, 0
+  std::uint32_t flags = 0;       ///< kBodyStatic, kBodyGod; other bits reserved, 0
   double mass = 1.0;             ///< kg
   double bounding_radius = 0.0;  ///< radius of the element's sphere, m
 };

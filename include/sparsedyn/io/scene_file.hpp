@@ -55,6 +55,9 @@ struct SceneBody {
   double restitution = 1.0;       ///< in [0, 1]
   double friction = 0.0;          ///< Coulomb coefficient >= 0 (polyhedra)
   bool is_static = false;         ///< "static": fixed in place, infinite mass (BodyDef)
+  /// "god": {"max_acceleration": A, "track": [{"time": t, "position": [x, y, z],
+  /// "velocity": [x, y, z] (optional)}, ...]}: a god object (BodyDef::god).
+  std::optional<GodDef> god;
 };
 
 /// A scene as a file describes it: the World's settings, shapes, bodies and how long to run.
