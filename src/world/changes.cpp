@@ -195,16 +195,18 @@ void World::Impl::Replan(std::uint32_t i, const GodDef& god) {
   const double now = core_.Now();
   const Path path = core_.bodies.paths.PathOf(i);
   GodPlan plan(now, path.PositionAt(now), path.VelocityAt(now), god.track, god.max_acceleration);
-  const Vec3 a = plan.PieceAt(now).a;
-  core_.bodies.gods.Replace(i, GodBodies::God{god, std::move(plan)});
+  GodBodies::God replaced{god, std::move(plan)};
+  const Vec3 a = replaced.Follow(now).a;
+  core_.bodies.gods.Replace(i, std::move(replaced));
   changes_.SetAcceleration(i, a);
 }
 
 void World::Impl::HandleBodyTimer(std::uint32_t i) {
   BodyStore& bodies = core_.bodies;
   if (bodies.IsGod(i)) {
-    // The next piece of its plan: the same place and velocity, a new acceleration.
-    changes_.SetAcceleration(i, bodies.gods.PlanOf(i).PieceAt(core_.Now()).a);
+    // The next piece of its plan: the same place and velocity (to round-off), a new
+    // acceleration.
+    changes_.SetPiece(i, bodies.gods.Follow(i, core_.Now()));
   } else {
     changes_.SetAcceleration(i, core_.settings.gravity + bodies.thrusts.TakeNext(i));
   }

@@ -21,16 +21,35 @@ class GodBodies {
   struct God {
     GodDef def;
     GodPlan plan;
+    /// The piece of the plan the body's path follows (its acceleration).
+    std::size_t piece = 0;
     /// The targets of def.track not reached by `now` (those the plan arrives at later).
     GodDef Remaining(double now) const;
+    /// The path takes up the plan's piece at `now`.
+    const GodPiece& Follow(double now) {
+      const GodPiece& at = plan.PieceAt(now);
+      piece = static_cast<std::size_t>(&at - plan.pieces().data());
+      return at;
+    }
   };
 
   bool IsGod(std::uint32_t i) const { return any_ && of_[i].has_value(); }
   const God& Of(std::uint32_t i) const { return *of_[i]; }
   const GodPlan& PlanOf(std::uint32_t i) const { return of_[i]->plan; }
-  /// The time of god i's next piece switch after `now`, or infinity (not a god, or holding).
-  double NextSwitch(std::uint32_t i, double now) const {
-    return IsGod(i) ? of_[i]->plan.NextSwitchAfter(now) : kInfinity;
+  /// When god i's path takes up the piece after the one it follows, or infinity (not a god,
+  /// or on its final piece). Counted from the piece followed, not from the clock, so that a
+  /// switch that ties with another of the body's events (a cell crossing at the same instant)
+  /// is still taken.
+  double NextSwitch(std::uint32_t i) const {
+    if (!IsGod(i)) return kInfinity;
+    const God& god = *of_[i];
+    const std::vector<GodPiece>& pieces = god.plan.pieces();
+    return god.piece + 1 < pieces.size() ? pieces[god.piece + 1].t0 : kInfinity;
+  }
+  /// God i's path takes up its plan's piece at `now`: the plan's state then.
+  GodState Follow(std::uint32_t i, double now) {
+    of_[i]->Follow(now);
+    return of_[i]->plan.StateAt(now);
   }
 
   /// A new element (index `index`), a god object when `god` is given.

@@ -40,6 +40,14 @@ void PathChanges::SetAcceleration(std::uint32_t i, const Vec3& free_acceleration
   ReportSegment(i);
 }
 
+void PathChanges::SetPiece(std::uint32_t i, const GodState& state) {
+  ElementPaths& paths = core_.bodies.paths;
+  RebaseRotation(i);
+  paths.accelerations().SetFree(i, state.acceleration, paths.Size());
+  paths.SetStart(i, PathStart{state.position, state.velocity, paths.Now()});
+  ReportSegment(i);
+}
+
 void PathChanges::SetPose(std::uint32_t i, const Vec3& position,
                           const Eigen::Quaterniond& orientation) {
   BodyStore& bodies = core_.bodies;

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "dynamics/god_plan.hpp"
 #include "world/sparse_phase.hpp"
 #include "world/world_core.hpp"
 
@@ -32,6 +33,9 @@ class PathChanges {
   /// A body's new free acceleration (gravity plus a new thrust), its velocity kept; a wall's
   /// hold ends (the wall takes it up again if the body still rests on it).
   void SetAcceleration(std::uint32_t i, const Vec3& free_acceleration);
+  /// A god object's next piece: its plan's state at now, exact, so that round-off does not
+  /// gather from piece to piece (a move ends at rest at exactly zero velocity).
+  void SetPiece(std::uint32_t i, const GodState& state);
   /// A body moved at once to `position` with `orientation`, moving at v and omega (a teleport).
   void SetPose(std::uint32_t i, const Vec3& position, const Eigen::Quaterniond& orientation);
   /// Sphere i held by the walls `walls` (bits; 0 releases it), moving at `v` otherwise: its

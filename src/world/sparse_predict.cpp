@@ -113,7 +113,7 @@ Event SparsePhase::FinishPrediction(std::uint32_t i, const Candidate& best) {
   if (polyhedra && !god && core_.Walled()) event = walls_->PredictPolyhedron(i, event);
   // A change of its thrust at a given time (its schedule), or of a god object's piece, is the
   // body's own event.
-  const double timer = god ? core_.bodies.gods.NextSwitch(i, now) : core_.bodies.thrusts.NextTime(i);
+  const double timer = god ? core_.bodies.gods.NextSwitch(i) : core_.bodies.thrusts.NextTime(i);
   if (timer < event.time) event = Event{MaxOf(now, timer), EventKind::kBodyTimer, 0, kNoIndex, 0};
   return event;
 }

@@ -52,7 +52,7 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
                                                  def.god->max_acceleration)});
   }
   bodies.paths.Append(PathStart{def.position, def.velocity, now},
-                      god ? god->plan.PieceAt(now).a : core_.settings.gravity + def.thrust);
+                      god ? god->Follow(now).a : core_.settings.gravity + def.thrust);
   if (!started_) admission_.NoteAdded(def.position, radius);
   bodies.materials.Append(
       Material{radius, god ? 0.0 : 1.0 / def.mass, def.restitution, def.friction});

@@ -59,7 +59,7 @@ TEST(SceneFileErrors, UnknownKeysNameTheirPathAndTheAllowedKeys) {
   EXPECT_EQ(ErrorOf(OneBody(std::string(kSphere) + R"(, "velocty": [1, 0, 0])")),
             "s.json: bodies[0].velocty: unknown key (allowed here: shape, position, orientation, "
             "velocity, angular_velocity, thrust, thrust_schedule, mass, density, restitution, "
-            "friction, static)");
+            "friction, static, god)");
   EXPECT_EQ(ErrorOf(OneBody(R"("shape": {"sphere": {"radius": 1, "r": 2}})")),
             "s.json: bodies[0].shape.sphere.r: unknown key (allowed here: radius)");
 }

@@ -79,7 +79,7 @@ TEST(SceneGod, RecordedWithTheGodFlag) {
 }
 
 TEST(SceneGodErrors, EveryBadEntryIsNamedByItsPath) {
-  EXPECT_EQ(ErrorOf(WithGod("3")), "s.json: bodies[0].god: must be an object, got 3");
+  EXPECT_EQ(ErrorOf(WithGod("3")), "s.json: bodies[0].god: must be an object, got number 3");
   EXPECT_EQ(ErrorOf(WithGod(R"({"track": []})")),
             "s.json: bodies[0].god.max_acceleration: is missing");
   EXPECT_EQ(ErrorOf(WithGod(R"({"max_acceleration": 0, "track": []})")),
@@ -87,7 +87,7 @@ TEST(SceneGodErrors, EveryBadEntryIsNamedByItsPath) {
   EXPECT_EQ(ErrorOf(WithGod(R"({"max_acceleration": 1})")), "s.json: bodies[0].god.track: is missing");
   EXPECT_EQ(ErrorOf(WithGod(R"({"max_acceleration": 1, "track": {}})")),
             "s.json: bodies[0].god.track: must be an array of {\"time\": t, \"position\": "
-            "[x, y, z]}, got an object");
+            "[x, y, z]}, got object");
   EXPECT_EQ(ErrorOf(WithGod(R"({"max_acceleration": 1, "track": [{"time": 1}]})")),
             "s.json: bodies[0].god.track[0].position: is missing");
   EXPECT_EQ(ErrorOf(WithGod(R"({"max_acceleration": 1, "track": [{"time": 2, "position": [0, 0, 0]},)"
@@ -99,9 +99,9 @@ TEST(SceneGodErrors, EveryBadEntryIsNamedByItsPath) {
             "s.json: bodies[0].god.track[0].time: must not be before start_time (3.0), got 1.0");
   EXPECT_EQ(ErrorOf(WithGod(R"({"max_acceleration": 1, "track": [{"time": 1, "position": [0, 0, 0],)"
                             R"( "speed": 2}]})")),
-            "s.json: bodies[0].god.track[0]: unknown key \"speed\"");
+            "s.json: bodies[0].god.track[0].speed: unknown key (allowed here: time, position, velocity)");
   EXPECT_EQ(ErrorOf(WithGod(R"({"max_acceleration": 1, "track": [], "mass": 1})")),
-            "s.json: bodies[0].god: unknown key \"mass\"");
+            "s.json: bodies[0].god.mass: unknown key (allowed here: max_acceleration, track)");
 }
 
 }  // namespace

@@ -138,6 +138,8 @@ struct Sweep {
   }
 };
 
+// The hand's switch at t = 5.25 falls on y = 5, a grid cell boundary: the switch and the cell
+// crossing are due at the same instant, and the switch must not be lost behind the crossing.
 TEST(GodObjects, SweepsThroughAGasWithoutPenetratingAndFollowsItsPlan) {
   // Elastic: an accelerating hand pushing an inelastic ball ahead of it brings it to rest on
   // the hand, a resting contact (issue #37), which the collapse guard and the crawl check end.
@@ -154,7 +156,7 @@ TEST(GodObjects, SweepsThroughAGasWithoutPenetratingAndFollowsItsPlan) {
       const BodyState hand = sweep.world.StateAt(sweep.god, t);
       ASSERT_LE((hand.position - plan.StateAt(t).position).norm(), 1e-9) << "t = " << t;
     }
-    EXPECT_GT(god_hits, 20u) << "the hand met the gas";
+    EXPECT_GT(god_hits, 10u) << "the hand met the gas";
     EXPECT_LE(sweep.world.MaxPenetration(), 1e-9 * 2.0);
   }
 }
