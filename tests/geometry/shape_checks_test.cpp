@@ -63,7 +63,7 @@ TEST(ShapeChecks, RefusesCoincidentPoints) {
 }
 
 TEST(ShapeChecks, RefusesAScaleBelowKMinScale) {
-  ExpectRefused(Tetrahedron(1e-52), {"span only 1.41e-52", "kMinScale = 1e-50"});
+  ExpectRefused(Tetrahedron(1e-52), {"span only 1.73e-52", "kMinScale = 1e-50"});
 }
 
 TEST(ShapeChecks, RefusesPointsDistinctOnlyAtRoundOff) {
