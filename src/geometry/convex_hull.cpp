@@ -137,7 +137,9 @@ Result<ConvexPolyhedron> ConvexPolyhedron::FromPoints(std::span<const Eigen::Vec
   if (Status input = CheckHullInput(points, options.tolerance); !input) return input.error();
   std::vector<coordT> coordinates;
   coordinates.reserve(3 * points.size());
-  for (const Eigen::Vector3d& p : points) coordinates.insert(coordinates.end(), {p.x(), p.y(), p.z()});
+  for (const Eigen::Vector3d& p : points) {
+    coordinates.insert(coordinates.end(), {p.x(), p.y(), p.z()});
+  }
 
   // Qhull's defaults in 3-d include 'C-0': facets that are coplanar or concave within round-off
   // are merged, so its facets are already polygons; 'Pp' silences precision warnings, which

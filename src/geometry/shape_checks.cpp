@@ -80,10 +80,10 @@ Status CheckExtent(std::span<const Eigen::Vector3d> points, std::string_view nou
                  " (bounding-box diagonal), below kMinScale = " + Num(kMinScale)};
   }
   if (scale < kMinRelativeScale * magnitude) {
-    return Error{the + " are distinct only at round-off: they span " +
-                 Num(scale) + " at coordinates up to " + Num(magnitude) + " (relative " +
-                 Num(scale / magnitude) + ", below kMinRelativeScale = " +
-                 Num(kMinRelativeScale) + ")"};
+    return Error{the + " are distinct only at round-off: they span " + Num(scale) +
+                 " at coordinates up to " + Num(magnitude) + " (relative " +
+                 Num(scale / magnitude) + ", below kMinRelativeScale = " + Num(kMinRelativeScale) +
+                 ")"};
   }
   return Status::Ok();
 }
@@ -108,8 +108,8 @@ Status CheckHasVolume(std::span<const Eigen::Vector3d> points, double relative_t
       Farthest(points, [&](const Eigen::Vector3d& p) { return (p - a).cross(u).norm(); });
   if (off_line <= thickness) {
     return Error{"the points are collinear (no volume): all lie within " + Num(off_line) +
-                 " of the line through points 0 and " + std::to_string(b) + " (" +
-                 tolerance_text + ")"};
+                 " of the line through points 0 and " + std::to_string(b) + " (" + tolerance_text +
+                 ")"};
   }
   const Eigen::Vector3d n = u.cross(points[c] - a).normalized();
   const double off_plane =
@@ -150,8 +150,7 @@ Status CheckFinishedPolyhedron(const ConvexPolyhedron& polyhedron) {
                  ", expected 2"};
   }
   // Convex: no vertex above a face plane (the final planes, as the narrow phase sees them).
-  const double allowed =
-      std::max(p.tolerance(), kMinRelativeThickness) * p.scale();
+  const double allowed = std::max(p.tolerance(), kMinRelativeThickness) * p.scale();
   for (int f = 0; f < p.face_count(); ++f) {
     for (int v = 0; v < p.vertex_count(); ++v) {
       const double above = p.face(f).plane.SignedDistance(p.vertex(v));

@@ -108,8 +108,8 @@ TEST(ShapeChecks, AcceptsShapesJustInsideTheLimits) {
 
 TEST(ShapeChecks, FinishedSolidsPassTheLastCheck) {
   for (int s = 0; s < kPlatonicSolidCount; ++s) {
-    const Result<ConvexPolyhedron> solid = ConvexPolyhedron::FromPoints(
-        SolidVertices(static_cast<PlatonicSolid>(s)));
+    const Result<ConvexPolyhedron> solid =
+        ConvexPolyhedron::FromPoints(SolidVertices(static_cast<PlatonicSolid>(s)));
     ASSERT_TRUE(solid.ok()) << solid.error().message;
     const Status finished = CheckFinishedPolyhedron(*solid);
     EXPECT_TRUE(finished.ok()) << finished.error().message;
@@ -132,8 +132,7 @@ std::string MeshError(const PolygonMesh& mesh) {
 TEST(ShapeChecks, FromMeshRefusesTheSameDegenerateVertices) {
   PolygonMesh mesh = TetrahedronMesh(1.0);
   mesh.vertices[0].z() = -2e50;
-  EXPECT_NE(MeshError(mesh).find("vertex 0 has a coordinate of magnitude 2e+50"),
-            std::string::npos)
+  EXPECT_NE(MeshError(mesh).find("vertex 0 has a coordinate of magnitude 2e+50"), std::string::npos)
       << MeshError(mesh);
   EXPECT_NE(MeshError(TetrahedronMesh(1e-60)).find("the vertices span only"), std::string::npos)
       << MeshError(TetrahedronMesh(1e-60));
@@ -143,8 +142,7 @@ TEST(ShapeChecks, FromMeshRefusesTheSameDegenerateVertices) {
       << MeshError(mesh);
   mesh = TetrahedronMesh(1e-9);
   for (Eigen::Vector3d& v : mesh.vertices) v += Eigen::Vector3d(1e5, 0, 0);
-  EXPECT_NE(MeshError(mesh).find("the vertices are distinct only at round-off"),
-            std::string::npos)
+  EXPECT_NE(MeshError(mesh).find("the vertices are distinct only at round-off"), std::string::npos)
       << MeshError(mesh);
 }
 
