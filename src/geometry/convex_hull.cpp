@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // ConvexPolyhedron::FromPoints: the convex hull by Qhull (reentrant C API), converted to a face
-// list and validated by FromMesh.
+// list and validated by FromMesh. Degenerate point sets are refused before Qhull sees them
+// (shape_checks.hpp): Qhull crashed on some (a SEGV in qh_normalize2, issue #39 part 1), and what
+// it returns is checked as well before it is trusted.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +14,7 @@ extern "C" {
 #include <libqhull_r/qhull_ra.h>
 }
 
+#include "geometry/shape_checks.hpp"
 #include "sparsedyn/geometry/convex_polyhedron.hpp"
 
 namespace sparsedyn {
@@ -86,23 +89,56 @@ std::vector<std::int32_t> FacetLoop(qhT* qh, facetT* facet,
   return loop;
 }
 
+// What FacetLoop and FromMesh rely on in Qhull's output, checked rather than trusted: a 3-d hull
+// of at least 4 facets, each with a finite unit normal and at least 3 vertices that are input
+// points (not Qhull's own interior or projected points).
+Status CheckFacets(qhT* qh, std::size_t point_count) {
+  const std::string what = "Qhull returned a broken hull: ";
+  if (qh->hull_dim != 3 || qh->num_facets < 4) {
+    return Error{what + std::to_string(qh->num_facets) + " facets in dimension " +
+                 std::to_string(qh->hull_dim) + " (a polyhedron needs at least 4 in dimension 3)"};
+  }
+  int index = 0;
+  facetT* facet = nullptr;
+  FORALLfacets {
+    const std::string name = "facet " + std::to_string(index++);
+    if (facet->normal == nullptr || facet->vertices == nullptr) {
+      return Error{what + name + " has no normal or no vertices"};
+    }
+    const Eigen::Vector3d normal(facet->normal[0], facet->normal[1], facet->normal[2]);
+    const double length = normal.norm();
+    if (!std::isfinite(length) || std::abs(length - 1.0) > 1e-6) {
+      return Error{what + name + " has a normal of length " + std::to_string(length)};
+    }
+    const int vertex_count = qh_setsize(qh, facet->vertices);
+    if (vertex_count < 3) {
+      return Error{what + name + " has " + std::to_string(vertex_count) + " vertices"};
+    }
+    vertexT* vertex = nullptr;
+    vertexT** vertexp = nullptr;
+    FOREACHvertex_(facet->vertices) {
+      const int id = qh_pointid(qh, vertex->point);
+      if (id < 0 || static_cast<std::size_t>(id) >= point_count) {
+        return Error{what + name + " has a vertex that is not an input point (id " +
+                     std::to_string(id) + ")"};
+      }
+    }
+  }
+  return Status::Ok();
+}
+
 }  // namespace
 
 Result<ConvexPolyhedron> ConvexPolyhedron::FromPoints(std::span<const Eigen::Vector3d> points,
                                                       MeshValidation options) {
-  if (points.size() < 4) {
-    return Error{"a convex hull needs at least 4 points, got " + std::to_string(points.size())};
-  }
   if (points.size() > static_cast<std::size_t>(INT32_MAX / 3)) {
     return Error{"too many points for a convex hull: " + std::to_string(points.size())};
   }
+  if (Status input = CheckHullInput(points, options.tolerance); !input) return input.error();
   std::vector<coordT> coordinates;
   coordinates.reserve(3 * points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (!points[i].allFinite()) {
-      return Error{"point " + std::to_string(i) + " has a non-finite coordinate"};
-    }
-    coordinates.insert(coordinates.end(), {points[i].x(), points[i].y(), points[i].z()});
+  for (const Eigen::Vector3d& p : points) {
+    coordinates.insert(coordinates.end(), {p.x(), p.y(), p.z()});
   }
 
   // Qhull's defaults in 3-d include 'C-0': facets that are coplanar or concave within round-off
@@ -116,8 +152,9 @@ Result<ConvexPolyhedron> ConvexPolyhedron::FromPoints(std::span<const Eigen::Vec
                                      False, flags, nullptr, errors.file());
   if (exit_code != 0) {
     return Error{"Qhull could not build the convex hull of " + std::to_string(points.size()) +
-                 " points (they may be coplanar or coincident): " + errors.Text()};
+                 " points (exit code " + std::to_string(exit_code) + "): " + errors.Text()};
   }
+  if (Status facets = CheckFacets(qh, points.size()); !facets) return facets.error();
 
   // All points become mesh vertices so that messages name the caller's indices; FromMesh drops
   // those that no facet uses while keeping the order of the others.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // ConvexPolyhedron::FromMesh: validation of a face list (topology, geometry, convexity), merging
 // of coplanar faces, and the half-edge numbering of the result. Errors name the input's indices.
+// Coordinates out of range and vertex sets too small to resolve are refused up front, and the
+// result is checked once more before it is handed out (shape_checks.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/shape_checks.hpp"
 #include "sparsedyn/geometry/convex_polyhedron.hpp"
 
 namespace sparsedyn {
@@ -304,19 +307,15 @@ Result<Merged> MergeCoplanarFaces(const std::vector<Eigen::Vector3d>& points,
   return merged;
 }
 
-// Arguments and the basic shape of the input: finite coordinates, enough faces, faces of at
-// least 3 distinct in-range vertices.
+// Arguments and the basic shape of the input: finite coordinates within kMaxCoordinate, enough
+// faces, faces of at least 3 distinct in-range vertices.
 Status CheckInput(const PolygonMesh& mesh, const MeshValidation& options) {
   if (!(options.tolerance >= 0.0 && options.tolerance < 0.1)) {
     return Error{"MeshValidation::tolerance must be in [0, 0.1), got " + Num(options.tolerance)};
   }
   const std::size_t input_vertex_count = mesh.vertices.size();
-  for (std::size_t v = 0; v < input_vertex_count; ++v) {
-    const Eigen::Vector3d& p = mesh.vertices[v];
-    if (!p.allFinite()) {
-      return Error{"vertex " + std::to_string(v) + " has a non-finite coordinate (" + Num(p.x()) +
-                   ", " + Num(p.y()) + ", " + Num(p.z()) + ")"};
-    }
+  if (Status coordinates = CheckCoordinates(mesh.vertices, "vertex"); !coordinates) {
+    return coordinates;
   }
   if (mesh.faces.size() < 4) {
     return Error{"a polyhedron needs at least 4 faces, the mesh has " +
@@ -404,6 +403,12 @@ Result<ConvexPolyhedron> ConvexPolyhedron::FromMesh(const PolygonMesh& mesh,
   }
   const auto used_count = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
   if (Status euler = CheckEuler(*linked, used_count, loops.size()); !euler) return euler.error();
+  std::vector<Eigen::Vector3d> used_vertices;
+  for (std::size_t v = 0; v < input_vertex_count; ++v) {
+    if (used[v]) used_vertices.push_back(mesh.vertices[v]);
+  }
+  // Before any tolerance is taken relative to the scale: a scale of 0 or round-off makes none.
+  if (Status extent = CheckExtent(used_vertices, "vertices"); !extent) return extent.error();
 
   // Scale (bounding box diagonal of the used vertices) and the absolute tolerance.
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo,
@@ -552,6 +557,7 @@ Result<ConvexPolyhedron> ConvexPolyhedron::FromMesh(const PolygonMesh& mesh,
   poly.tolerance_ = options.tolerance;
   poly.warnings_ = std::move(warnings);
   poly.ComputeDerivedData();
+  if (Status finished = CheckFinishedPolyhedron(poly); !finished) return finished.error();
   return poly;
 }
 

@@ -38,5 +38,23 @@ TEST(SceneMeshErrors, ANonConvexMeshIsNamedWithItsFile) {
   EXPECT_NE(error.find("open.off: "), std::string::npos) << error;
 }
 
+TEST(SceneMeshErrors, ARefusedPolyhedronLeavesNoCachedShapeBehind) {
+  // Two bodies name one degenerate mesh (every vertex the same point): the shape built once per
+  // spec must not be cached when refused, so the second body is refused too, not given a shape.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "sparsedyn_scene_mesh";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "point.off") << "OFF\n4 4 6\n1 1 1\n1 1 1\n1 1 1\n1 1 1\n"
+                                      "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  const std::string body = R"({"shape": "point.off", "position": [0, 0, 0]})";
+  const Result<SceneDescription> scene =
+      ParseScene(R"({"bodies": [)" + body + ", " + body + "]}", "s.json", dir);
+  std::filesystem::remove(dir / "point.off");
+  ASSERT_FALSE(scene.ok());
+  const std::string& error = scene.error().message;
+  EXPECT_NE(error.find("bodies[0].shape.mesh: "), std::string::npos) << error;
+  EXPECT_NE(error.find("bodies[1].shape.mesh: "), std::string::npos) << error;
+  EXPECT_NE(error.find("all 4 vertices coincide"), std::string::npos) << error;
+}
+
 }  // namespace
 }  // namespace sparsedyn
