@@ -32,12 +32,8 @@ void PathChanges::RebaseRotation(std::uint32_t i) {
 }
 
 void PathChanges::SetAcceleration(std::uint32_t i, const Vec3& free_acceleration) {
-  ElementPaths& paths = core_.bodies.paths;
-  const Vec3 p = paths.PositionNow(i), v = paths.VelocityNow(i);
-  RebaseRotation(i);
-  paths.accelerations().SetFree(i, free_acceleration, paths.Size());
-  paths.SetStart(i, PathStart{p, v, paths.Now()});
-  ReportSegment(i);
+  const ElementPaths& paths = core_.bodies.paths;
+  SetPiece(i, GodState{paths.PositionNow(i), paths.VelocityNow(i), free_acceleration});
 }
 
 void PathChanges::SetPiece(std::uint32_t i, const GodState& state) {
