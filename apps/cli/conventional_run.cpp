@@ -57,6 +57,9 @@ nlohmann::json Summary(const SceneDescription& scene, const ConventionalWorld& w
       {"steps", s.steps},
       {"preset", scene.name},
       {"bodies", world.BodyCount()},
+      // The method simulates moving polyhedra only (ConventionalWorld::AddBody).
+      {"bodies_by_kind",
+       {{"spheres", 0}, {"polyhedra", world.BodyCount()}, {"static", 0}, {"god", 0}}},
       {"density", PackingOf(scene)},
       {"seed", scene.seed},
       {"broadphase", "sweep"},
@@ -102,7 +105,15 @@ int RunConventional(const RunOptions& options) {
   if (scene->settings.start_time != 0.0) {
     return fail("--method conventional: the scene's start_time must be 0", 2);
   }
+  if (!scene->settings.drag.IsZero()) {
+    return fail("--method conventional: drag: drag applies to --method event", 2);
+  }
   for (std::size_t i = 0; i < scene->bodies.size(); ++i) {
+    if (scene->bodies[i].drag && !scene->bodies[i].drag->IsZero()) {
+      return fail("--method conventional: bodies[" + std::to_string(i) +
+                      "].drag: drag applies to --method event",
+                  2);
+    }
     if (!scene->bodies[i].thrust_schedule.empty()) {
       return fail("--method conventional: bodies[" + std::to_string(i) +
                       "].thrust_schedule: thrust schedules apply to --method event",

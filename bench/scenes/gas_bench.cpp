@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 
+#include "bench/support/enskog_rate.hpp"
 #include "bench/support/turns.hpp"
 #include "scenes/gas.hpp"
 #include "scenes/random.hpp"
@@ -20,12 +21,7 @@
 namespace sparsedyn {
 namespace {
 
-// Enskog collision rate per particle (sigma = 1, kT = m = 1), to size the simulated stretch.
-double CollisionRate(double packing) {
-  const double n = 6 * packing / M_PI;
-  const double g = (1 - packing / 2) / std::pow(1 - packing, 3);
-  return 4 * n * g * std::sqrt(M_PI);
-}
+using bench::CollisionRate;
 
 // Collisions per particle in the timed stretch: shorter at large N keeps a run within minutes
 // (10^7: ~5 million collisions). SPARSEDYN_GAS_STRETCH overrides it: A/B comparisons on a noisy

@@ -58,8 +58,8 @@ class ConventionalWorld {
                               const ConventionalSettings& conventional);
 
   /// Adds a polyhedral body before the first AdvanceTo. Refused, with nothing changed, for a
-  /// sphere (no shape), bad values (as World::AddBody), a body outside a walled box or touching
-  /// one already present, or after the start.
+  /// sphere (no shape), a static body, a god object, bad values (as World::AddBody), a body
+  /// outside a walled box or touching one already present, or after the start.
   Result<BodyId> AddBody(const BodyDef& def);
 
   /// Steps until time t (the last step is shortened to end at t). Fails when one step needs an

@@ -38,6 +38,12 @@ struct Statistics {
   std::uint64_t detail_iterations = 0;
   /// Predictions that hit their work cap and resumed later.
   std::uint64_t detail_checkpoints = 0;
+  /// Drag check events: a body with drag reached the end of its segment's horizon and started
+  /// a new one from its true state (App. E.2's out-of-envelope checks).
+  std::uint64_t drag_checks = 0;
+  /// Refinement steps of contact predictions on the true motion of bodies with drag (each a
+  /// local Taylor segment with a narrower envelope).
+  std::uint64_t drag_steps = 0;
   std::uint64_t walk_cap_hits = 0;  ///< closest-feature walks that hit their iteration cap (0)
   // Wall-clock seconds by phase, measured only when WorldSettings::profile_phases is set.
   double seconds_sparse = 0;    ///< predictions (sparse phase)

@@ -84,7 +84,15 @@ struct WorldSettings {
   /// The clock's value when the World is made, s: a World built from the state of another at
   /// time t (a final scene written by `sparsedyn run --write-final-scene`) runs on from t.
   double start_time = 0.0;
+  /// The drag of every body whose BodyDef::drag is unset (App. H.2; zero: none). Coefficients
+  /// finite and >= 0. Drag needs contact_tolerance >= kMinDragContactTolerance.
+  Drag drag;
 };
+
+/// The smallest contact_tolerance a World with drag accepts: a contact on a body's true motion
+/// is found by narrowing its envelope down to a fraction of the tolerance band (docs/dynamics.md,
+/// "Drag in the World"), which needs a band wider than the true motion's certified error.
+inline constexpr double kMinDragContactTolerance = 1e-12;
 
 /// Checks `settings` (issue #39 part 9): a walled or periodic container with finite bounds of
 /// magnitude <= 1e100 and hi > lo on every axis, known enumerators, finite gravity of magnitude
@@ -112,6 +120,12 @@ struct BodyDef {
   double restitution = 1.0;            ///< 1 = elastic; the collision uses the product of the two
   double friction = 0.0;               ///< Coulomb coefficient; a pair uses sqrt(mu_a mu_b)
   Envelope envelope;                   ///< growth of the bounding sphere beyond the body (App. F)
+  /// Aerodynamic drag on the body (App. H.2): unset (std::nullopt) takes WorldSettings::drag,
+  /// a value (Drag{} included) is the body's own. The body's true motion is then
+  /// x'' = gravity + thrust - c1 v - c2 |v| v (docs/dynamics.md, "Drag in the World"). Spheres
+  /// only, in Worlds without polyhedra or static bodies (not supported yet), and without an
+  /// envelope of its own.
+  std::optional<Drag> drag;
   /// A static body: fixed where it is placed, of infinite mass, with no events of its own (a
   /// floor, a table, a cushion). Any shape; velocity, spin, thrust and envelope must be zero.
   /// It may touch other bodies at the start, not overlap them, and may reach beyond a walled
@@ -159,7 +173,10 @@ struct CollisionEvent {
 /// exp(angular_velocity (t - t0)) orientation, until its next segment. Reported to
 /// OnSegment callbacks whenever a body's path changes (a collision); the first segment of every
 /// body is its BodyDef at the time it was added. In a periodic box positions are not wrapped
-/// into the box between segments: wrap them when drawing.
+/// into the box between segments: wrap them when drawing. For a body with drag the position
+/// and velocity are its true state at t0 and the acceleration its true acceleration there: the
+/// polynomial is the Taylor path its element follows, within max 0.1 of its radius of the true
+/// motion (StateAt), with a new segment at each drag check.
 struct MotionSegment {
   /// When the segment starts, s.
   double t0 = 0.0;
@@ -195,10 +212,12 @@ class World {
   /// Adds a body at the current time. Refused, with nothing changed, when a value is NaN/Inf,
   /// radius or mass <= 0, a magnitude is absurd (beyond 1e100, a radius below 2^-40 of its
   /// coordinates: src/world/hostile_values.hpp), restitution outside [0, 1], friction < 0, the
-  /// orientation is not a unit quaternion, an envelope coefficient < 0, a thrust change is not
-  /// later than the one before or comes before the clock, a god object's track is bad
-  /// (ValidateGodTrack's fields, a time before the clock), the body lies outside the container,
-  /// or it overlaps (polyhedra: touches) a body already present.
+  /// orientation is not a unit quaternion, an envelope coefficient < 0, a drag coefficient is
+  /// negative or not finite, drag would meet a polyhedron, a static body, a god object or an
+  /// envelope (not supported yet), a thrust change is not later than the one before or comes
+  /// before the clock, a god object's track is bad (ValidateGodTrack's fields, a time before
+  /// the clock), the body lies outside the container, or it overlaps (polyhedra: touches) a
+  /// body already present. Spheres and polyhedra may share a World.
   Result<BodyId> AddBody(const BodyDef& def);
 
   // --- Changes between AdvanceTo calls, at Time(). Each is checked first: a refused change
@@ -248,6 +267,9 @@ class World {
   std::size_t BodyCount() const;
   /// Whether `id` names a body the World holds (not removed).
   bool IsValid(BodyId id) const;
+  /// Whether `id` is a convex polyhedron (BodyDef::shape), static, god object or moving; false
+  /// for a sphere and for an invalid or removed handle.
+  bool IsPolyhedron(BodyId id) const;
   /// The handle of the body in slot `index` (slots are numbered in the order bodies were
   /// added, and a removed body's slot is taken by a later one); invalid for an empty slot.
   /// Without removals, IdOf(0) ... IdOf(BodyCount() - 1) are all the bodies.

@@ -10,6 +10,8 @@ path between events, and any state at any time is evaluated from it.
     x = world.positions()                 # (N, 3) float64, from the paths, in one call
     hits = world.collisions()             # structured array: time, a, b, wall, point, normal, impulse
     print(world.stats()["collisions"])    # the keys of `sparsedyn run --json`
+    body = world.bodies()[0]              # a BodyId: slot and generation; indexes the arrays
+    world.apply_impulse(body, [0, 0, 1], world.state(body).position)   # changes between runs
 
 Errors raise InputError (a ValueError) or SimulationError (a RuntimeError), both subclasses of
 sparsedyn.Error, with the library's message (which names the body, file, line, JSON path or
@@ -18,9 +20,13 @@ option). The guide is docs/tutorial.md and docs/python.md in the source reposito
 
 from ._sparsedyn import (  # noqa: F401  (the package's API)
     Body,
+    BodyId,
+    BodyState,
     Broadphase,
     Container,
     Error,
+    GodDef,
+    GodTarget,
     InputError,
     Polyhedron,
     RotationModel,
@@ -38,7 +44,7 @@ from ._sparsedyn import (  # noqa: F401  (the package's API)
 __version__ = "0.1.0"
 
 __all__ = [
-    "Body", "Broadphase", "Container", "Error", "InputError", "Polyhedron", "RotationModel",
-    "Scene", "Settings", "SimulationError", "World", "distance", "load_scene", "parse_scene",
-    "preset", "preset_names",
+    "Body", "BodyId", "BodyState", "Broadphase", "Container", "Error", "GodDef", "GodTarget",
+    "InputError", "Polyhedron", "RotationModel", "Scene", "Settings", "SimulationError", "World",
+    "distance", "load_scene", "parse_scene", "preset", "preset_names",
 ]

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The plain data of include/sparsedyn/world.hpp: Container, Settings (WorldSettings), Body
-// (BodyDef), the enums and Polyhedron. A new field is one def_readwrite line here.
+// (BodyDef), GodDef and GodTarget, BodyId, BodyState, the enums and Polyhedron. A new field is one
+// def_readwrite line here.
 #include <pybind11/eigen.h>
+#include <pybind11/operators.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -75,7 +77,10 @@ void BindSettings(py::module_& m) {
       .def_readwrite("elastic_below_speed", &WorldSettings::elastic_below_speed, "m/s")
       .def_readwrite("grid_cells_per_body", &WorldSettings::grid_cells_per_body)
       .def_readwrite("stall_event_limit", &WorldSettings::stall_event_limit)
-      .def_readwrite("profile_phases", &WorldSettings::profile_phases);
+      .def_readwrite("profile_phases", &WorldSettings::profile_phases)
+      .def_readwrite("start_time", &WorldSettings::start_time,
+                     "s: the clock when the World is made (a World that runs on from the state "
+                     "of another at that time)");
 }
 
 void BindBody(py::module_& m) {
@@ -116,7 +121,103 @@ void BindBody(py::module_& m) {
           [](BodyDef& b, const std::array<double, 3>& e) {
             b.envelope = {e[0], e[1], e[2]};
           },
-          "(e0, e1, e2): growth of the bounding sphere, App. F");
+          "(e0, e1, e2): growth of the bounding sphere, App. F")
+      .def_property(
+          "thrust_schedule", [](const BodyDef& b) { return ScheduleList(b.thrust_schedule); },
+          [](BodyDef& b, const py::sequence& changes) {
+            b.thrust_schedule = ScheduleFrom(changes, "thrust_schedule");
+          },
+          "later changes of thrust: (time, (x, y, z)) pairs, times increasing and not before "
+          "the World's clock")
+      .def_readwrite("is_static", &BodyDef::is_static,
+                     "fixed where it is placed, infinite mass, no events of its own (zero "
+                     "velocity, spin, thrust and envelope); not in periodic boxes")
+      .def_readwrite("god", &BodyDef::god,
+                     "a GodDef, or None: a god object driven along its track with bounded "
+                     "acceleration, of infinite mass to other bodies; no thrust, spin or "
+                     "envelope; not in periodic boxes");
+}
+
+void BindGod(py::module_& m) {
+  py::class_<GodTarget>(m, "GodTarget",
+                        "One target of a god object's track (GodTarget): be at `position` at "
+                        "`time`, moving at `velocity` if one is given.")
+      .def(py::init([](double time, const Vec3& position, std::optional<Vec3> velocity) {
+             return GodTarget{time, position, velocity};
+           }),
+           py::arg("time"), py::arg("position"), py::arg("velocity") = py::none())
+      .def_readwrite("time", &GodTarget::time, "s, absolute")
+      .def_readwrite("position", &GodTarget::position, "the centre of mass, m")
+      .def_readwrite("velocity", &GodTarget::velocity,
+                     "m/s, or None: the plan chooses it (a sweep through the waypoints)")
+      .def("__repr__", [](const GodTarget& t) {
+        return py::str("GodTarget(time={!r}, position={}, velocity={})")
+            .format(t.time, Vec3(t.position),
+                    t.velocity ? py::cast(Vec3(*t.velocity)) : py::none());
+      });
+  py::class_<GodDef>(m, "GodDef",
+                     "A god object's drive (GodDef): its track of GodTarget, followed with "
+                     "|acceleration| <= max_acceleration.")
+      .def(py::init([](double max_acceleration, std::vector<GodTarget> track) {
+             return GodDef{max_acceleration, std::move(track)};
+           }),
+           py::arg("max_acceleration") = 1.0, py::arg("track") = std::vector<GodTarget>{})
+      .def_readwrite("max_acceleration", &GodDef::max_acceleration, "A, m/s^2, > 0")
+      .def_readwrite("track", &GodDef::track,
+                     "a list of GodTarget, times strictly increasing, none before the World's "
+                     "clock (a copy: assign a new list to change it)")
+      .def("__repr__", [](const GodDef& g) {
+        return py::str("GodDef(max_acceleration={!r}, track={!r})")
+            .format(g.max_acceleration, py::cast(g.track));
+      });
+}
+
+void BindBodyId(py::module_& m) {
+  py::class_<BodyId>(m, "BodyId",
+                     "A body's handle, returned by World.add_body: its slot `index` (its row in "
+                     "the World's arrays) and the slot's `generation`. Stale once the body is "
+                     "removed: the World then refuses it, also when a later body takes the slot "
+                     "(under a new generation).")
+      .def(py::init([](std::uint32_t index, std::uint32_t generation) {
+             return BodyId{index, generation};
+           }),
+           py::arg("index"), py::arg("generation") = 0)
+      .def_readonly("index", &BodyId::index)
+      .def_readonly("generation", &BodyId::generation)
+      .def(
+          "__index__", [](const BodyId& id) { return id.index; },
+          "The slot: a handle indexes the World's arrays (positions()[body]).")
+      .def(py::self == py::self)
+      .def("__hash__",
+           [](const BodyId& id) { return py::hash(py::make_tuple(id.index, id.generation)); })
+      .def("__repr__", [](const BodyId& id) {
+        return "BodyId(index=" + std::to_string(id.index) +
+               ", generation=" + std::to_string(id.generation) + ")";
+      });
+}
+
+void BindBodyState(py::module_& m) {
+  py::class_<BodyState>(m, "BodyState",
+                        "A body's state evaluated from its path at some time (World.state).")
+      .def_readonly("position", &BodyState::position, "centre of mass, m")
+      .def_readonly("velocity", &BodyState::velocity, "m/s")
+      .def_readonly("acceleration", &BodyState::acceleration,
+                    "m/s^2: gravity plus thrust, unless a wall holds the body")
+      .def_property_readonly(
+          "orientation", [](const BodyState& s) { return QuaternionTuple(s.orientation); },
+          "body to world, unit quaternion (w, x, y, z)")
+      .def_readonly("angular_velocity", &BodyState::angular_velocity, "rad/s, world frame")
+      .def_readonly("radius", &BodyState::radius,
+                    "m: a sphere's radius or a polyhedron's bounding radius")
+      .def_readonly("mass", &BodyState::mass, "kg; inf for a static body")
+      .def_readonly("version", &BodyState::version, "the number of path changes so far")
+      .def("__repr__", [](const BodyState& s) {
+        return py::str(
+                   "BodyState(position={}, velocity={}, orientation={}, "
+                   "angular_velocity={})")
+            .format(Vec3(s.position), Vec3(s.velocity), QuaternionTuple(s.orientation),
+                    Vec3(s.angular_velocity));
+      });
 }
 
 void BindPolyhedron(py::module_& m) {
@@ -173,7 +274,10 @@ void BindTypes(py::module_& m) {
   BindContainer(m);
   BindSettings(m);
   BindPolyhedron(m);
+  BindGod(m);
   BindBody(m);
+  BindBodyId(m);
+  BindBodyState(m);
 }
 
 }  // namespace sparsedyn::python

@@ -40,6 +40,33 @@ Pose PoseFrom(const py::sequence& pose, const char* name) {
   return out;
 }
 
+std::vector<ThrustChange> ScheduleFrom(const py::sequence& changes, const char* name) {
+  std::vector<ThrustChange> schedule;
+  for (std::size_t k = 0; k < py::len(changes); ++k) {
+    const py::object change = changes[k];
+    const std::string at = std::string(name) + "[" + std::to_string(k) + "]";
+    if (!py::isinstance<py::sequence>(change) || py::len(change) != 2) {
+      throw InputError(at + ": a thrust change is a pair (time, (x, y, z))");
+    }
+    const py::sequence pair = change.cast<py::sequence>();
+    const py::sequence thrust = pair[1].cast<py::sequence>();
+    if (py::len(thrust) != 3) throw InputError(at + ": the thrust is (x, y, z): 3 numbers");
+    schedule.push_back(
+        {pair[0].cast<double>(),
+         Vec3(thrust[0].cast<double>(), thrust[1].cast<double>(), thrust[2].cast<double>())});
+  }
+  return schedule;
+}
+
+py::list ScheduleList(const std::vector<ThrustChange>& schedule) {
+  py::list out;
+  for (const ThrustChange& change : schedule) {
+    out.append(py::make_tuple(
+        change.time, py::make_tuple(change.thrust[0], change.thrust[1], change.thrust[2])));
+  }
+  return out;
+}
+
 void SetAttributes(py::handle self, const py::kwargs& values) {
   for (const auto& [key, value] : values) py::setattr(self, key, value);
 }

@@ -6,9 +6,11 @@
 
 #include <Eigen/Geometry>
 #include <memory>
+#include <vector>
 
 #include "sparsedyn/geometry/convex_polyhedron.hpp"
 #include "sparsedyn/geometry/pose.hpp"
+#include "sparsedyn/types.hpp"
 
 namespace sparsedyn::python {
 
@@ -18,6 +20,12 @@ Eigen::Quaterniond QuaternionFrom(const pybind11::sequence& wxyz);
 pybind11::tuple QuaternionTuple(const Eigen::Quaterniond& q);
 /// A pose from (x, y, z, qw, qx, qy, qz), as `sparsedyn distance --pose-a` takes it.
 Pose PoseFrom(const pybind11::sequence& pose, const char* name);
+
+/// A thrust schedule from a sequence of (time, (x, y, z)) pairs, s and m/s^2; the World checks
+/// the times.
+std::vector<ThrustChange> ScheduleFrom(const pybind11::sequence& changes, const char* name);
+/// The schedule as a list of (time, (x, y, z)) tuples.
+pybind11::list ScheduleList(const std::vector<ThrustChange>& schedule);
 
 /// A convex polyhedron shared by bodies and distance queries (Python class Polyhedron).
 struct PyPolyhedron {

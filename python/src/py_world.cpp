@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <limits>
 
 #include "errors.hpp"
 
@@ -25,7 +26,19 @@ struct CollisionRow {
 
 static_assert(sizeof(CollisionRow) == 88, "CollisionRow must match CollisionDtype()");
 
+// The error of a state asked for at t before the World's clock `now`.
+InputError BeforeNow(double t, double now) {
+  return InputError("t = " + py::repr(py::float_(t)).cast<std::string>() +
+                    " is before the World's time " + py::repr(py::float_(now)).cast<std::string>() +
+                    ": states are known from the current time on");
+}
+
 }  // namespace
+
+std::string NotInTheWorld(const char* call, BodyId id) {
+  return std::string(call) + ": body " + std::to_string(id.index) + " (generation " +
+         std::to_string(id.generation) + ") is not in the World (removed, or never added)";
+}
 
 py::dtype CollisionDtype() {
   py::list fields;
@@ -53,13 +66,13 @@ void PyWorld::CaptureInitialState() {
   context_.momentum_initial = world_.Momentum();
 }
 
-std::uint32_t PyWorld::AddBody(const BodyDef& def) {
+BodyId PyWorld::AddBody(const BodyDef& def) {
   Result<BodyId> id = [&] {
     py::gil_scoped_release release;
     std::lock_guard<std::mutex> lock(mutex_);
     return world_.AddBody(def);
   }();
-  return ValueOrRaise(std::move(id)).index;
+  return ValueOrRaise(std::move(id));
 }
 
 void PyWorld::AdvanceTo(double t) {
@@ -87,16 +100,19 @@ std::size_t PyWorld::BodyCount() {
 
 py::array_t<double> PyWorld::States(StateField field, std::optional<double> t) {
   const std::size_t columns = field == StateField::kOrientation ? 4 : 3;
-  const std::size_t n = BodyCount();
-  py::array_t<double> out(
-      std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(columns)});
-  double* data = out.mutable_data();
+  std::vector<double> values;
+  double now = 0;
   const bool ok = With([&](const World& w) {
-    const double at = t.value_or(w.Time());
-    if (!(at >= w.Time())) return false;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      const BodyState s = w.StateAt(w.IdOf(i), at);
-      double* row = data + i * columns;
+    now = w.Time();
+    const double at = t.value_or(now);
+    if (!(at >= now)) return false;
+    // One row per slot: an empty slot's row is NaN, so that rows stay the bodies' indices.
+    values.assign(w.SlotCount() * columns, std::numeric_limits<double>::quiet_NaN());
+    for (std::uint32_t slot = 0; slot < w.SlotCount(); ++slot) {
+      const BodyId id = w.IdOf(slot);
+      if (!id.valid()) continue;
+      const BodyState s = w.StateAt(id, at);
+      double* row = values.data() + slot * columns;
       switch (field) {
         case StateField::kPosition:
           std::copy_n(s.position.data(), 3, row);
@@ -117,13 +133,32 @@ py::array_t<double> PyWorld::States(StateField field, std::optional<double> t) {
     }
     return true;
   });
-  if (!ok) {
-    throw InputError("t = " + py::repr(py::float_(*t)).cast<std::string>() +
-                     " is before the World's time " +
-                     py::repr(py::float_(Time())).cast<std::string>() +
-                     ": states are known from the current time on");
-  }
+  if (!ok) throw BeforeNow(*t, now);
+  const auto rows = static_cast<py::ssize_t>(values.size() / columns);
+  py::array_t<double> out(std::vector<py::ssize_t>{rows, static_cast<py::ssize_t>(columns)});
+  std::copy(values.begin(), values.end(), out.mutable_data());
   return out;
+}
+
+BodyState PyWorld::StateOf(BodyId id, std::optional<double> t) {
+  enum class Refused { kNone, kHandle, kTime };
+  Refused refused = Refused::kNone;
+  double now = 0;
+  BodyState state;
+  With([&](const World& w) {
+    now = w.Time();
+    if (!w.IsValid(id)) {
+      refused = Refused::kHandle;
+    } else if (!(t.value_or(now) >= now)) {
+      refused = Refused::kTime;
+    } else {
+      state = w.StateAt(id, t.value_or(now));
+    }
+    return 0;
+  });
+  if (refused == Refused::kHandle) throw InputError(NotInTheWorld("state", id));
+  if (refused == Refused::kTime) throw BeforeNow(*t, now);
+  return state;
 }
 
 std::string PyWorld::SummaryJson() {

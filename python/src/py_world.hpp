@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "errors.hpp"
 #include "sparsedyn/io/run_summary.hpp"
 #include "sparsedyn/world.hpp"
 
@@ -26,18 +27,36 @@ class PyWorld {
   /// Takes `world`; `preset`, `density` and `seed` are what stats() reports about its origin.
   PyWorld(World world, std::string preset, double density, std::uint64_t seed);
 
-  /// Adds a body (InputError when refused) and returns its index, its row in the arrays.
-  std::uint32_t AddBody(const BodyDef& def);
+  /// Adds a body (InputError when refused) and returns its handle; its index is its row in the
+  /// arrays.
+  BodyId AddBody(const BodyDef& def);
+  /// Runs the change `f(world)` (returning a Status) under the mutex with the GIL released;
+  /// InputError with the library's message when the World refuses it (and nothing changed).
+  template <typename F>
+  void Change(F&& f) {
+    Status status;
+    {
+      pybind11::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(mutex_);
+      status = f(world_);
+    }
+    if (!status) throw InputError(status.error().message);
+  }
   /// Processes every event up to t with the GIL released (SimulationError on failure).
   void AdvanceTo(double t);
 
   /// The simulated time now, s.
   double Time();
-  /// The number of bodies (rows of the arrays).
+  /// The number of bodies the World holds.
   std::size_t BodyCount();
-  /// One field of every body at time t (default: now) as an (N, 3) or (N, 4) float64 array,
-  /// evaluated from the paths in C++. t before now is an InputError.
+  /// One field of every slot at time t (default: now) as an (S, 3) or (S, 4) float64 array,
+  /// S = SlotCount(), evaluated from the paths in C++: row k is the body in slot k (its
+  /// BodyId::index), a row of NaN for an empty slot (a removed body's, not taken again). t
+  /// before now is an InputError.
   pybind11::array_t<double> States(StateField field, std::optional<double> t);
+  /// The state of `id` at time t (default: now); InputError for a handle the World does not
+  /// hold or a t before now.
+  BodyState StateOf(BodyId id, std::optional<double> t);
   /// The summary of `sparsedyn run --json` (RunSummaryJson) as JSON text.
   std::string SummaryJson();
   /// The collisions since the last call, as a numpy structured array; the buffer is emptied.
@@ -60,6 +79,10 @@ class PyWorld {
   bool started_ = false;  // the first AdvanceTo has fixed the initial energy and momentum
   std::vector<CollisionEvent> collisions_;
 };
+
+/// The message of a query `call` about a handle the World does not hold, in the words of the
+/// library's own refusals (src/world/changes.cpp).
+std::string NotInTheWorld(const char* call, BodyId id);
 
 /// The numpy dtype of PyWorld::Collisions: time, a, b, wall, point[3], normal[3], impulse.
 pybind11::dtype CollisionDtype();

@@ -58,8 +58,8 @@ def test_head_on_elastic_collision_swaps_velocities_at_the_contact_time():
 
 def test_gravity_gives_the_parabola():
     world = sparsedyn.World(sparsedyn.Settings(container=BOX, gravity=[0, 0, -9.81]))
-    index = world.add_body(radius=0.25, position=[5, 5, 8], velocity=[0.5, 0, 1])
-    assert index == 0
+    ball = world.add_body(radius=0.25, position=[5, 5, 8], velocity=[0.5, 0, 1])
+    assert (ball.index, ball.generation) == (0, 0)
     t = 0.6
     expected = [5 + 0.5 * t, 5, 8 + t - 0.5 * 9.81 * t * t]
     np.testing.assert_allclose(world.positions(t=t)[0], expected, rtol=1e-14)

@@ -16,6 +16,12 @@ Status CheckBody(const BodyDef& def, std::size_t index, const std::string& body)
   if (def.shape == nullptr) {
     return Error{body + "the conventional method simulates polyhedra only (no shape given)"};
   }
+  if (def.is_static) {
+    return Error{body + "the conventional method has no static bodies (every body moves)"};
+  }
+  if (def.god) {
+    return Error{body + "the conventional method has no god objects (every body is free)"};
+  }
   if (std::optional<Error> error = CheckBodyValues(def, index)) return *error;
   if (!def.envelope.IsZero()) {
     return Error{body + "envelopes are for spheres; a polyhedron's path is exact"};

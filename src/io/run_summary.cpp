@@ -14,6 +14,24 @@ const char* BroadphaseName(Broadphase broadphase) {
   return broadphase == Broadphase::kAllPairs ? "allpairs" : "grid";
 }
 
+// The bodies by kind: moving spheres, moving polyhedra (neither static nor god objects), static
+// bodies and god objects (of either shape), so that the four add up to "bodies".
+nlohmann::json BodiesByKind(const World& world) {
+  std::size_t spheres = 0, polyhedra = 0, statics = 0, gods = 0;
+  for (const BodyId id : world.Bodies()) {
+    if (world.IsStatic(id)) {
+      ++statics;
+    } else if (world.IsGod(id)) {
+      ++gods;
+    } else if (world.IsPolyhedron(id)) {
+      ++polyhedra;
+    } else {
+      ++spheres;
+    }
+  }
+  return {{"spheres", spheres}, {"polyhedra", polyhedra}, {"static", statics}, {"god", gods}};
+}
+
 }  // namespace
 
 double ReportedPacking(const SceneDescription& scene) {
@@ -37,6 +55,7 @@ std::string RunSummaryJson(const World& world, const RunContext& context) {
       {"method", "event"},
       {"preset", context.preset},
       {"bodies", world.BodyCount()},
+      {"bodies_by_kind", BodiesByKind(world)},
       {"density", context.density},
       {"seed", context.seed},
       {"broadphase", BroadphaseName(world.Settings().broadphase)},
@@ -52,6 +71,8 @@ std::string RunSummaryJson(const World& world, const RunContext& context) {
       {"detail_predictions", stats.detail_predictions},
       {"detail_iterations", stats.detail_iterations},
       {"detail_checkpoints", stats.detail_checkpoints},
+      {"drag_checks", stats.drag_checks},
+      {"drag_steps", stats.drag_steps},
       {"collisions", stats.collisions + stats.wall_collisions},
       {"body_collisions", stats.collisions},
       {"wall_collisions", stats.wall_collisions},

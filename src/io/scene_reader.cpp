@@ -26,6 +26,8 @@ constexpr std::uint64_t kMaxBodies = 100000000;
 // Upper bound on times in a file (start, duration, thrust changes), s: far beyond any run, and
 // small enough that the clock still resolves events there (CheckClockResolution).
 constexpr double kMaxTime = 1e12;
+// Upper bound on drag coefficients (1/s, 1/m), the World's bound on magnitudes.
+constexpr double kMaxDrag = 1e100;
 
 // "line L, column C" of a byte offset, for JSON syntax errors.
 std::string LineColumn(std::string_view text, std::size_t byte) {
@@ -49,8 +51,8 @@ class SceneParser {
   Result<SceneDescription> Parse(const json& root) {
     if (checker_.Object(root, "",
                         {"name", "description", "seed", "packing", "start_time", "duration",
-                         "gravity", "broadphase", "grid_cells_per_body", "stall_event_limit",
-                         "container", "tolerances", "bodies"})) {
+                         "gravity", "drag", "broadphase", "grid_cells_per_body",
+                         "stall_event_limit", "container", "tolerances", "bodies"})) {
       ParseTopLevel(root);
     }
     if (!checker_.ok()) return checker_.ToError();
@@ -82,6 +84,9 @@ class SceneParser {
     }
     if (root.contains("gravity")) {
       if (auto g = checker_.Vector(root["gravity"], "gravity")) settings.gravity = *g;
+    }
+    if (root.contains("drag")) {
+      if (std::optional<Drag> drag = ParseDrag(root["drag"], "drag")) settings.drag = *drag;
     }
     if (root.contains("broadphase")) ParseBroadphase(root["broadphase"]);
     if (root.contains("grid_cells_per_body")) {
@@ -117,6 +122,25 @@ class SceneParser {
     } else {
       checker_.Fail("broadphase", "must be \"grid\" or \"allpairs\", got " + value.dump());
     }
+  }
+
+  // {"linear": c1, "quadratic": c2}: each finite and >= 0, a missing one 0.
+  std::optional<Drag> ParseDrag(const json& value, const std::string& path) {
+    if (!checker_.Object(value, path, {"linear", "quadratic"})) return std::nullopt;
+    Drag drag;
+    bool ok = true;
+    for (const auto& [key, out] : {std::pair<const char*, double*>{"linear", &drag.linear},
+                                   std::pair<const char*, double*>{"quadratic", &drag.quadratic}}) {
+      if (!value.contains(key)) continue;
+      const std::optional<double> c = checker_.NumberIn(value[key], Key(path, key), 0, kMaxDrag);
+      if (c) {
+        *out = *c;
+      } else {
+        ok = false;
+      }
+    }
+    if (!ok) return std::nullopt;
+    return drag;
   }
 
   void ParseContainer(const json& value) {
@@ -197,7 +221,8 @@ class SceneParser {
     if (!checker_.Object(
             value, path,
             {"shape", "position", "orientation", "velocity", "angular_velocity", "thrust",
-             "thrust_schedule", "mass", "density", "restitution", "friction", "static", "god"})) {
+             "thrust_schedule", "mass", "density", "restitution", "friction", "drag", "static",
+             "god"})) {
       return;
     }
     SceneBody body;
@@ -226,6 +251,7 @@ class SceneParser {
       ParseThrustSchedule(value["thrust_schedule"], Key(path, "thrust_schedule"), body);
     }
     if (value.contains("god")) ParseGod(value["god"], Key(path, "god"), body);
+    if (value.contains("drag")) body.drag = ParseDrag(value["drag"], Key(path, "drag"));
     ParseMass(value, path, body);
     if (value.contains("restitution")) {
       if (auto e = checker_.NumberIn(value["restitution"], Key(path, "restitution"), 0, 1)) {

@@ -24,6 +24,10 @@ ordered_json ContainerJson(const Container& container) {
   return out;
 }
 
+ordered_json DragJson(const Drag& drag) {
+  return ordered_json{{"linear", drag.linear}, {"quadratic", drag.quadratic}};
+}
+
 // Every field of a body, on one line of the file.
 ordered_json BodyJson(const SceneDescription& scene, const SceneBody& body) {
   ordered_json out;
@@ -58,6 +62,7 @@ ordered_json BodyJson(const SceneDescription& scene, const SceneBody& body) {
     }
     out["god"] = {{"max_acceleration", body.god->max_acceleration}, {"track", std::move(track)}};
   }
+  if (body.drag) out["drag"] = DragJson(*body.drag);
   return out;
 }
 
@@ -74,6 +79,8 @@ std::string FormatScene(const SceneDescription& scene) {
   top["duration"] = scene.duration;
   top["container"] = ContainerJson(settings.container);
   top["gravity"] = VectorJson(settings.gravity);
+  // Written only when not zero, so that scenes without drag read as they always did.
+  if (!settings.drag.IsZero()) top["drag"] = DragJson(settings.drag);
   top["broadphase"] = settings.broadphase == Broadphase::kGrid ? "grid" : "allpairs";
   top["grid_cells_per_body"] = settings.grid_cells_per_body;
   if (settings.stall_event_limit != WorldSettings{}.stall_event_limit) {
@@ -160,6 +167,7 @@ BodyDef SceneBodyDef(const SceneDescription& scene, std::size_t index) {
   def.friction = body.friction;
   def.is_static = body.is_static;
   def.god = body.god;
+  def.drag = body.drag;
   return def;
 }
 

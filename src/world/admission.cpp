@@ -50,6 +50,7 @@ Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t s
   if (polyhedron && !def.envelope.IsZero()) {
     return Error{body + "envelopes are for spheres; a polyhedron's path is exact"};
   }
+  if (std::optional<Error> error = CheckDragCombination(def, body)) return *error;
   if (std::optional<Error> error = CheckSchedule(def.thrust_schedule, core_.Now(), body)) {
     return *error;
   }
@@ -82,6 +83,38 @@ Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t s
   return accepted;
 }
 
+std::optional<Error> Admission::CheckDragCombination(const BodyDef& def,
+                                                     const std::string& body) const {
+  // Drag's contacts are predicted on true motions for sphere pairs and walls only: drag with
+  // polyhedra, static bodies or god objects in the World is not supported yet
+  // (docs/dynamics.md).
+  const BodyStore& bodies = core_.bodies;
+  if (def.god && def.drag && !def.drag->IsZero()) {
+    return Error{body + "drag on a god object is not supported (its track drives it)"};
+  }
+  if (!DragOf(def, core_.settings.drag).IsZero()) {
+    const std::string at = body + "drag ";
+    if (def.shape != nullptr) return Error{at + "on a polyhedron is not supported yet"};
+    if (!def.envelope.IsZero()) return Error{at + "and an envelope together are not supported"};
+    if (bodies.rigid.AnyPolyhedron() || !bodies.statics.Empty()) {
+      return Error{at + "in a World with polyhedra or static bodies is not supported yet"};
+    }
+    if (bodies.gods.Any()) return Error{at + "in a World with god objects is not supported yet"};
+    if (core_.settings.contact_tolerance < kMinDragContactTolerance) {
+      // The message's 1e-12 is kMinDragContactTolerance.
+      return Error{at + "needs settings.contact_tolerance >= 1e-12, got " +
+                   FormatExact(core_.settings.contact_tolerance)};
+    }
+  }
+  if ((def.shape != nullptr || def.is_static) && bodies.paths.drags().Any()) {
+    return Error{body + "a polyhedron or static body in a World with drag is not supported yet"};
+  }
+  if (def.god && bodies.paths.drags().Any()) {
+    return Error{body + "a god object in a World with drag is not supported yet"};
+  }
+  return std::nullopt;
+}
+
 std::optional<Error> Admission::CheckStatic(const BodyDef& def, const std::string& body) const {
   const std::string at = body + "a static body ";
   if (core_.periodic) return Error{at + "cannot be in a periodic box (not supported)"};
@@ -91,6 +124,7 @@ std::optional<Error> Admission::CheckStatic(const BodyDef& def, const std::strin
     return Error{at + "has no thrust or thrust_schedule"};
   }
   if (!def.envelope.IsZero()) return Error{at + "has no envelope"};
+  if (def.drag && !def.drag->IsZero()) return Error{at + "has no drag (it never moves)"};
   return std::nullopt;
 }
 

@@ -60,6 +60,10 @@ class Admission {
     bool is_static = false;  // may touch other bodies (not overlap them)
     bool is_god = false;     // may overlap other god objects and statics
   };
+  /// Drag where it is not supported yet (a polyhedron, a static body, a god object, an envelope
+  /// of its own, a World with polyhedra, static bodies or god objects) or without the contact
+  /// band it needs.
+  std::optional<Error> CheckDragCombination(const BodyDef& def, const std::string& body) const;
   /// What a static body may not have (a motion of any kind, an envelope, a periodic box).
   std::optional<Error> CheckStatic(const BodyDef& def, const std::string& body) const;
   /// A god object's definition: its track (ValidateGodTrack, not before the clock) and what it

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "base/format.hpp"
 
@@ -47,6 +48,20 @@ std::optional<Error> CheckBodyValues(const BodyDef& def, std::size_t index) {
     if (!std::isfinite(envelope[k]) || envelope[k] < 0) {
       return Error{body + "envelope.e" + std::to_string(k) + " must be finite and >= 0, got " +
                    FormatExact(envelope[k])};
+    }
+  }
+  if (def.drag) {
+    if (std::optional<Error> error = CheckDrag(*def.drag, body + "drag")) return *error;
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> CheckDrag(const Drag& drag, const std::string& name) {
+  // isfinite first: a NaN compared with < is an invalid operation (the tests trap it).
+  for (const auto& [key, value] : {std::pair{"linear", drag.linear},
+                                   std::pair{"quadratic", drag.quadratic}}) {
+    if (!std::isfinite(value) || value < 0) {
+      return Error{name + "." + key + " must be finite and >= 0, got " + FormatExact(value)};
     }
   }
   return std::nullopt;

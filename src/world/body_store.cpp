@@ -14,6 +14,7 @@ void BodyStore::Permute(const std::vector<std::uint32_t>& old_of_new) {
   const auto permute = [&old_of_new](auto& values) { PermuteVector(values, old_of_new); };
   permute(paths.Records());
   paths.accelerations().Permute(permute);
+  paths.drags().Permute(permute);
   materials.Permute(permute);
   rigid.Permute(permute);
   envelopes.Permute(permute);

@@ -24,14 +24,27 @@ namespace sparsedyn {
 /// The envelopes of the bodies (App. F): empty until some body has one.
 class Envelopes {
  public:
+  /// Whether some body has an envelope (its own, or its drag segment's).
   bool Any() const { return any_; }
+  /// Whether some body has an envelope of its own (BodyDef::envelope), which grows without
+  /// bound; a drag segment's stays below its limit (DragMotions::MaxError).
+  bool AnyOwn() const { return any_own_; }
   const Envelope& Of(std::uint32_t i) const { return of_[i]; }
   void Append(std::uint32_t index, const Envelope& envelope) {
     if (!envelope.IsZero() && !any_) {
       any_ = true;
       of_.resize(index);
     }
+    any_own_ = any_own_ || !envelope.IsZero();
     if (any_) of_.push_back(envelope);
+  }
+  /// Body i's envelope is a drag segment's from now on.
+  void SetDrag(std::uint32_t i, const Envelope& envelope, std::size_t count) {
+    if (!any_) {
+      any_ = true;
+      of_.resize(count);
+    }
+    of_[i] = envelope;
   }
   template <typename PermuteFn>
   void Permute(PermuteFn&& permute) {
@@ -41,6 +54,7 @@ class Envelopes {
 
  private:
   bool any_ = false;
+  bool any_own_ = false;
   std::vector<Envelope> of_;
 };
 
@@ -65,30 +79,37 @@ struct BodyStore {
   /// Whether some pair of elements engages when they meet (Engages): else no engagement
   /// can exist, and the hot paths skip looking for one.
   bool EngagesOnMeet() const {
-    return envelopes.Any() || rigid.AnyPolyhedron() || !statics.Empty() || gods.Any();
+    return envelopes.AnyOwn() || rigid.AnyPolyhedron() || !statics.Empty() || gods.Any();
   }
   /// Whether every element is a sphere without an envelope on a straight line, and nothing
   /// changes a path but collisions.
   bool AllOnStraightLines() const {
     const Accelerations& a = paths.accelerations();
-    return !envelopes.Any() && !rigid.AnyPolyhedron() && !thrusts.Any() && !gods.Any() &&
-           a.Uniform() &&
-           a.UniformValue().isZero(0.0);
+    return !envelopes.Any() && !paths.drags().Any() && !rigid.AnyPolyhedron() &&
+           !thrusts.Any() && !gods.Any() && a.Uniform() && a.UniformValue().isZero(0.0);
   }
+  /// Whether body i has drag: its element follows a Taylor path within an envelope of its true
+  /// motion (ElementPaths::TruePositionAt), renewed at each of its events.
+  bool HasDrag(std::uint32_t i) const { return paths.drags().Has(i); }
+  /// Body i's new drag segment from its path start (just set to its true state): the
+  /// DragMotion, the Taylor path and the envelope of its element. Body i has drag.
+  void StartDragSegment(std::uint32_t i) { envelopes.SetDrag(i, paths.StartDrag(i), Size()); }
 
   RigidPath RigidPathOf(std::uint32_t i) const {
     return RigidPath{paths.PathOf(i), rigid.Orientation0(i), rigid.Omega(i)};
   }
   bool IsPolyhedron(std::uint32_t i) const { return rigid.IsPolyhedron(i); }
   bool IsGod(std::uint32_t i) const { return gods.IsGod(i); }
+  /// Whether body i has an envelope of its own (not a drag segment's).
   bool HasEnvelope(std::uint32_t i) const {
-    return envelopes.Any() && !envelopes.Of(i).IsZero();
+    return envelopes.AnyOwn() && !envelopes.Of(i).IsZero() && !HasDrag(i);
   }
   /// Whether the element spheres of i and j, when they meet, are engaged and watched by the
   /// detailed phase (a polyhedron, or a sphere whose envelope is wider than the body); else
-  /// the meeting is the contact of two spheres. Two god objects are engaged too, in a pair
-  /// that never touches (PairKind::kInert), so that the sparse phase skips them while their
-  /// spheres overlap.
+  /// the meeting is the contact of two spheres (with drag: the sparse phase predicted the
+  /// contact on the true motions, world/drag_contacts.hpp). Two god objects are engaged too,
+  /// in a pair that never touches (PairKind::kInert), so that the sparse phase skips them
+  /// while their spheres overlap.
   bool Engages(std::uint32_t i, std::uint32_t j) const {
     return IsPolyhedron(i) || IsPolyhedron(j) || HasEnvelope(i) || HasEnvelope(j) ||
            (IsGod(i) && IsGod(j));

@@ -126,7 +126,9 @@ Status World::Impl::ApplyImpulse(BodyId id, const Vec3& impulse, const Vec3& poi
   const std::uint32_t i = *element;
   const double now = core_.Now();
   const Vec3 centre = bodies.paths.PathOf(i).PositionAt(now);
-  const Vec3 torque_impulse = (point - centre).cross(impulse);
+  // In a periodic box the path is not wrapped between restarts while StateAt is: the lever arm
+  // is the image of point - centre nearest zero, whichever image either is given in.
+  const Vec3 torque_impulse = core_.MinimumImage(point - centre).cross(impulse);
   if (!torque_impulse.isZero(0.0)) bodies.rigid.Track(bodies.Size());
   const Vec3 v = bodies.paths.VelocityNow(i) + bodies.materials.InvMass(i) * impulse;
   if (!bodies.rigid.Tracked()) {
@@ -207,8 +209,14 @@ void World::Impl::HandleBodyTimer(std::uint32_t i) {
     // The next piece of its plan: the same place and velocity (to round-off), a new
     // acceleration.
     changes_.SetPiece(i, bodies.gods.Follow(i, core_.Now()));
-  } else {
+  } else if (bodies.thrusts.NextTime(i) <= core_.Now()) {
     changes_.SetAcceleration(i, core_.settings.gravity + bodies.thrusts.TakeNext(i));
+  } else {
+    // A drag check (App. E.2): the element's envelope holds the true motion up to here; a new
+    // segment from the true state (its version up: partners predict against the new one).
+    SPARSEDYN_ASSERT(bodies.HasDrag(i), "a body timer that is neither thrust, god nor drag");
+    ++core_.observers.stats().drag_checks;
+    changes_.SetVelocity(i, bodies.paths.VelocityNow(i));
   }
   sparse_.PredictFull(i);
   detailed_.PredictEngagementsOf(i);

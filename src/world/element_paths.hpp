@@ -8,6 +8,7 @@
 #include "motion/path.hpp"
 #include "sparsedyn/types.hpp"
 #include "world/accelerations.hpp"
+#include "world/drag_motions.hpp"
 
 namespace sparsedyn {
 
@@ -38,26 +39,53 @@ class ElementPaths {
     static_cast<PathStart&>(records_[i]) = start;
   }
   /// Moves body i's path by `shift` (a periodic wrap: the same motion, seen in the box).
-  void ShiftStart(std::uint32_t i, const Vec3& shift) { records_[i].p0 += shift; }
+  void ShiftStart(std::uint32_t i, const Vec3& shift) {
+    records_[i].p0 += shift;
+    if (drags_.Has(i)) drags_.Shift(i, shift);
+  }
   /// The records themselves (the grid keeps its links there; memory order permutes them).
   BigVector<Record>& Records() { return records_; }
   const BigVector<Record>& Records() const { return records_; }
 
+  /// Body i's element path: its exact motion, or for a body with drag the Taylor path its
+  /// element follows (within its envelope of the true motion, TruePositionAt).
   Path PathOf(std::uint32_t i) const {
     const PathStart& s = records_[i];
-    return Path{s.p0, s.v0, accelerations_.Of(i), s.t0};
+    return Path{s.p0, s.v0, drags_.Has(i) ? drags_.PathAcceleration(i) : accelerations_.Of(i),
+                s.t0};
+  }
+  /// Body i's true position and velocity at t (in its current segment): its path, or for a body
+  /// with drag its DragMotion (docs/dynamics.md, "Drag in the World").
+  Vec3 TruePositionAt(std::uint32_t i, double t) const {
+    return drags_.Has(i) ? drags_.StateAt(i, t).position : PathOf(i).PositionAt(t);
+  }
+  Vec3 TrueVelocityAt(std::uint32_t i, double t) const {
+    return drags_.Has(i) ? drags_.StateAt(i, t).velocity : PathOf(i).VelocityAt(t);
   }
   // Body i's position and velocity now. On straight lines without the zero acceleration's terms
   // (the same numbers up to the sign of a zero) and without building its Path: a collision of a
   // gas asks for them six times.
   Vec3 PositionNow(std::uint32_t i) const {
     const PathStart& s = records_[i];
-    return straight_lines_ ? Vec3(s.p0 + (now_ - s.t0) * s.v0) : PathOf(i).PositionAt(now_);
+    return straight_lines_ ? Vec3(s.p0 + (now_ - s.t0) * s.v0) : TruePositionAt(i, now_);
   }
   Vec3 VelocityNow(std::uint32_t i) const {
-    return straight_lines_ ? records_[i].v0 : PathOf(i).VelocityAt(now_);
+    return straight_lines_ ? records_[i].v0 : TrueVelocityAt(i, now_);
   }
 
+  /// Body i's new drag segment from its path start (the true state there, just set): a new
+  /// DragMotion under its acceleration (gravity plus thrust, held components zero) and the
+  /// Taylor path its element follows; returns the element's envelope. Body i has drag.
+  Envelope StartDrag(std::uint32_t i) {
+    PathStart& s = records_[i];
+    const TaylorSegment segment = drags_.Start(i, s.t0, s.p0, s.v0, accelerations_.Of(i));
+    s.p0 = segment.path.p0;
+    s.v0 = segment.path.v0;
+    return segment.envelope;
+  }
+
+  DragMotions& drags() { return drags_; }
+  const DragMotions& drags() const { return drags_; }
   Accelerations& accelerations() { return accelerations_; }
   const Accelerations& accelerations() const { return accelerations_; }
 
@@ -68,7 +96,8 @@ class ElementPaths {
   }
 
   std::size_t MemoryBytes() const {
-    return records_.capacity() * sizeof(Record) + accelerations_.MemoryBytes();
+    return records_.capacity() * sizeof(Record) + accelerations_.MemoryBytes() +
+           drags_.MemoryBytes();
   }
 
  private:
@@ -76,6 +105,7 @@ class ElementPaths {
   bool straight_lines_ = false;
   BigVector<Record> records_;
   Accelerations accelerations_;
+  DragMotions drags_;
 };
 
 }  // namespace sparsedyn

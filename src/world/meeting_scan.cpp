@@ -27,7 +27,7 @@ void MeetingScan::ConsiderMeeting(std::uint32_t i, std::uint32_t j, const Vec3& 
   const bool bounded = MinOf(best.time, scan_limit_) != kInfinity && !OnStraightLines(a, b);
   const std::optional<ApartBound> bound =
       bounded ? std::optional<ApartBound>(std::in_place, a, b) : std::nullopt;
-  ConsiderImage(a, b, bound, reference, j, shift, best);
+  ConsiderImage(i, a, b, bound, reference, j, shift, best);
 }
 
 void MeetingScan::ConsiderImages(std::uint32_t i, std::uint32_t j, Candidate& best) {
@@ -45,7 +45,7 @@ void MeetingScan::ConsiderImages(std::uint32_t i, std::uint32_t j, Candidate& be
       OnStraightLines(a, b) ? std::nullopt : std::optional<ApartBound>(std::in_place, a, b);
   const std::vector<Vec3>& shifts = all_pairs_->ImageShifts();
   const std::size_t nearest = all_pairs_->NearestImage(b.p - a.p);
-  ConsiderImage(a, b, bound, reference, j, shifts[nearest], best);
+  ConsiderImage(i, a, b, bound, reference, j, shifts[nearest], best);
   if (shifts.size() == 1) return;
   // The other 26 images by slabs: an image whose shift along some axis leaves the pair apart
   // along that axis alone (ApartBound::ApartAlongEach, 9 tests for all 26) is skipped without a
@@ -69,7 +69,7 @@ void MeetingScan::ConsiderImages(std::uint32_t i, std::uint32_t j, Candidate& be
       ++stats.pairs_skipped;
       continue;
     }
-    ConsiderImage(a, b, bound, reference, j, shifts[r], best);
+    ConsiderImage(i, a, b, bound, reference, j, shifts[r], best);
   }
 }
 
@@ -83,13 +83,16 @@ double MeetingScan::PairReference(std::uint32_t i, std::uint32_t j) const {
   // only on the two paths, so a prediction kept across cell crossings, or made by another broad
   // phase at another time, is bit-identical (determinism across broad phases). Not for engaging
   // elements: their spheres may have met and separated since, on unchanged paths, and that past
-  // meeting must not come back as one now.
-  const ElementPaths& paths = core_.bodies.paths;
-  return core_.bodies.Engages(i, j) ? paths.Now()
-                                    : std::max(paths.Start(i).t0, paths.Start(j).t0);
+  // meeting must not come back as one now. Nor for bodies with drag, whose contact is looked
+  // for from now on their true motions.
+  const BodyStore& bodies = core_.bodies;
+  const ElementPaths& paths = bodies.paths;
+  const bool from_now = bodies.Engages(i, j) || (paths.drags().Any() &&
+                                                 (bodies.HasDrag(i) || bodies.HasDrag(j)));
+  return from_now ? paths.Now() : std::max(paths.Start(i).t0, paths.Start(j).t0);
 }
 
-void MeetingScan::ConsiderImage(const Mover& a, const Mover& b,
+void MeetingScan::ConsiderImage(std::uint32_t i, const Mover& a, const Mover& b,
                                 const std::optional<ApartBound>& bound, double reference,
                                 std::uint32_t j, const Vec3& shift, Candidate& best) {
   Statistics& stats = core_.observers.stats();
@@ -106,7 +109,32 @@ void MeetingScan::ConsiderImage(const Mover& a, const Mover& b,
     }
   }
   const double dt = PredictMeeting(a, b, shift);
+  const BodyStore& bodies = core_.bodies;
+  if (bodies.paths.drags().Any() && (bodies.HasDrag(i) || bodies.HasDrag(j)) &&
+      !bodies.Engages(i, j)) {
+    OfferDragContact(i, j, a, b, shift, dt, best);
+    return;
+  }
   if (dt != kInfinity) Offer(best, std::max(core_.Now(), EventTime(reference, dt)), j);
+}
+
+void MeetingScan::OfferDragContact(std::uint32_t i, std::uint32_t j, const Mover& a,
+                                   const Mover& b, const Vec3& shift, double dt,
+                                   Candidate& best) {
+  // The bodies cannot touch before their elements meet; elements that overlap now may hold
+  // bodies that touch at any time (PredictMeeting passes over an overlap that opens).
+  const double now = core_.Now();
+  const bool overlapping = (b.p + shift - a.p).norm() <= a.r0 + b.r0;
+  if (!overlapping && dt == kInfinity) return;
+  const double begin = overlapping ? now : std::max(now, EventTime(now, dt));
+  // Up to the earliest event found so far, and no further than either body's check (which
+  // predicts again with a new segment).
+  const DragMotions& drags = core_.bodies.paths.drags();
+  const double end = std::min({MinOf(best.time, scan_limit_), drags.CheckTime(i),
+                               drags.CheckTime(j)});
+  if (!(begin < end)) return;
+  const double contact = drag_.PairContact(i, j, shift, begin, end);
+  if (contact != kInfinity) Offer(best, contact, j);
 }
 
 void MeetingScan::OfferLinearMeeting(const PathStart& pi, std::uint32_t j, const Vec3& shift,

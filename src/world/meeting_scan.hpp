@@ -12,6 +12,7 @@
 #include "events/event.hpp"
 #include "math/event_time.hpp"
 #include "sparse/meeting.hpp"
+#include "world/drag_contacts.hpp"
 #include "world/world_core.hpp"
 
 namespace sparsedyn {
@@ -54,7 +55,8 @@ class MeetingScan {
         queue_(queue),
         engagements_(engagements),
         grid_(grid),
-        all_pairs_(all_pairs) {}
+        all_pairs_(all_pairs),
+        drag_(core) {}
 
   /// While a scan runs: the time after which no meeting can become the actor's event (its next
   /// wrap in a periodic AllPairs box), else infinity. Pairs apart so long are skipped.
@@ -94,8 +96,13 @@ class MeetingScan {
   // predicted from; the test of one image, given the two movers at that time.
   bool EngagedPair(std::uint32_t i, std::uint32_t j) const;
   double PairReference(std::uint32_t i, std::uint32_t j) const;
-  void ConsiderImage(const Mover& a, const Mover& b, const std::optional<ApartBound>& bound,
-                     double reference, std::uint32_t j, const Vec3& shift, Candidate& best);
+  void ConsiderImage(std::uint32_t i, const Mover& a, const Mover& b,
+                     const std::optional<ApartBound>& bound, double reference, std::uint32_t j,
+                     const Vec3& shift, Candidate& best);
+  // A pair with drag whose element meeting is `dt` after now: its contact on the true motions
+  // (DragContacts), offered if it comes before the earliest event found so far.
+  void OfferDragContact(std::uint32_t i, std::uint32_t j, const Mover& a, const Mover& b,
+                        const Vec3& shift, double dt, Candidate& best);
   // ScanNeighbors' rare step, out of the cell walk: certifies a root of LinearMeetingRoot.
   [[gnu::noinline]] void OfferLinearMeeting(const PathStart& pi, std::uint32_t j,
                                             const Vec3& shift, double reach, double dt,
@@ -108,6 +115,7 @@ class MeetingScan {
   const std::optional<AllPairs>& all_pairs_;
   BigVector<std::uint32_t> gathered_;
   double scan_limit_ = kInfinity;
+  DragContacts drag_;
 };
 
 namespace scan_detail {

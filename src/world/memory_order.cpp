@@ -32,7 +32,7 @@ void MemoryOrder::SetPeriod() {
 }
 
 void MemoryOrder::Reorder() {
-  SPARSEDYN_ASSERT(sparse_.grid() && !core_.bodies.envelopes.Any(),
+  SPARSEDYN_ASSERT(sparse_.grid() && !core_.bodies.envelopes.AnyOwn(),
                    "Reorder: only worlds on the grid (never built with envelopes) are renumbered");
   const Grid& grid = *sparse_.grid();
   const auto n = core_.bodies.Size();

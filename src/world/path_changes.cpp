@@ -21,7 +21,7 @@ void PathChanges::SetMotion(std::uint32_t i, const Vec3& v, const Vec3& omega) {
   const RigidPath path = bodies.RigidPathOf(i);
   bodies.rigid.SetRotation(i, path.OrientationAt(now).normalized(), omega);
   bodies.rigid.SetSpinRadius(i, bodies.SpinRadiusOf(i));
-  bodies.paths.SetStart(i, PathStart{path.centre.PositionAt(now), v, now});
+  bodies.paths.SetStart(i, PathStart{bodies.paths.TruePositionAt(i, now), v, now});
   ReportSegment(i);
 }
 

@@ -9,7 +9,8 @@
 
 namespace sparsedyn {
 
-/// Changes of a body's path at the current time (a collision, a wall's hold): the new segment
+/// Changes of a body's path at the current time (a collision, a wall's hold, a drag check):
+/// the new segment
 /// starts where the old one has the body now, the body's version goes up (its partners'
 /// predictions against it become stale, §4.2) and the OnSegment observers hear of it. What
 /// predicts again afterwards is the caller's business.
@@ -45,7 +46,10 @@ class PathChanges {
  private:
   // A tracked body's orientation at its new segment's start (now).
   void RebaseRotation(std::uint32_t i);
+  // The segment just set begins: a body with drag starts its new DragMotion and Taylor path
+  // there (App. H.2), then the version goes up and the observers hear of it.
   void ReportSegment(std::uint32_t i) {
+    if (core_.bodies.HasDrag(i)) core_.bodies.StartDragSegment(i);
     const std::uint32_t version = ++sparse_.PredictionOf(i).version;
     if (core_.observers.WantsSegments()) {
       const ElementPaths& paths = core_.bodies.paths;

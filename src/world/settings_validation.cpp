@@ -7,6 +7,7 @@
 
 #include "sparsedyn/world.hpp"
 #include "base/format.hpp"
+#include "world/body_checks.hpp"
 #include "world/hostile_values.hpp"
 
 namespace sparsedyn {
@@ -79,6 +80,12 @@ Status ValidateSettings(const WorldSettings& settings) {
   // The clock starts there: scene files allow [0, 1e12]; the library any finite time whose
   // magnitude leaves the clock a resolution (CheckClockResolution says more per World).
   if (Status s = CheckNumber("start_time", settings.start_time, -1e12, 1e12, false); !s) return s;
+  if (std::optional<Error> error = CheckDrag(settings.drag, "settings.drag")) return *error;
+  if (!settings.drag.IsZero() && settings.contact_tolerance < kMinDragContactTolerance) {
+    // The message's 1e-12 is kMinDragContactTolerance.
+    return Error{"settings.contact_tolerance must be >= 1e-12 with drag (its contacts are found "
+                 "within the band), got " + Format(settings.contact_tolerance)};
+  }
   return Status::Ok();
 }
 

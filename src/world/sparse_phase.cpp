@@ -10,7 +10,8 @@ namespace sparsedyn {
 
 SparsePhase::SparsePhase(WorldCore& core, const Engagements& engagements)
     : core_(core), engagements_(engagements),
-      scan_(core, queue_, engagements, grid_, all_pairs_) {}
+      scan_(core, queue_, engagements, grid_, all_pairs_),
+      drag_walls_(core) {}
 
 void SparsePhase::Build(double max_radius) {
   const BodyStore& bodies = core_.bodies;
@@ -26,9 +27,11 @@ void SparsePhase::Build(double max_radius) {
   // docs/lab/measurements.md#ninth-measurement.
   batch_tests_ = straight_lines && n <= kBatchTestMaxElements;
 
-  // The grid needs a box and bounded element radii (an envelope grows without bound).
+  // The grid needs a box and bounded element radii (an envelope of a body's own grows without
+  // bound).
   const bool boxed = box.kind != Container::Kind::kOpen;
-  if (core_.settings.broadphase == Broadphase::kGrid && boxed && !bodies.envelopes.Any() &&
+  // Drag's envelopes stay below their limit, which max_radius includes (World::AddBody).
+  if (core_.settings.broadphase == Broadphase::kGrid && boxed && !bodies.envelopes.AnyOwn() &&
       n > 0) {
     Grid::Config config;
     config.lo = box.lo;

@@ -9,6 +9,7 @@
 #include "events/calendar_queue.hpp"
 #include "events/engagements.hpp"
 #include "events/event.hpp"
+#include "world/drag_contacts.hpp"
 #include "world/meeting_scan.hpp"
 #include "world/world_core.hpp"
 
@@ -97,6 +98,7 @@ class SparsePhase {
   std::optional<Grid> grid_;
   std::optional<AllPairs> all_pairs_;
   MeetingScan scan_;
+  DragContacts drag_walls_;  // walls met by bodies with drag, on their true motions
   bool batch_tests_ = false;    // straight lines, few enough elements: TestGathered
   bool fetch_ahead_ = false;    // a gas on a grid beyond the caches: LookAhead
   bool linear_finish_ = false;  // straight lines on a grid, no walls: FinishLinearPrediction

@@ -91,9 +91,15 @@ Event SparsePhase::FinishPrediction(std::uint32_t i, const Candidate& best) {
   const bool polyhedra = core_.bodies.IsPolyhedron(i);
   // A god object goes where it is driven: walls and statics do not stop it.
   const bool god = core_.bodies.IsGod(i);
+  const DragMotions& drags = core_.bodies.paths.drags();
   if (!polyhedra && !god) {  // a polyhedron meets the walls after its cell crossing is known
     std::uint8_t wall = 0;
-    const double wall_time = std::max(now, EventTime(t0, PredictWall(m0, wall)));
+    // A body with drag: its true motion's contact, up to its check (which predicts again).
+    const double wall_time =
+        drags.Has(i) ? (core_.Walled() ? drag_walls_.FirstWallContact(
+                                             i, std::min(event.time, drags.CheckTime(i)), wall)
+                                       : kInfinity)
+                     : std::max(now, EventTime(t0, PredictWall(m0, wall)));
     if (wall_time < event.time) {
       event = Event{wall_time, EventKind::kWallMeet, wall, kNoIndex, 0};
     }
@@ -111,9 +117,10 @@ Event SparsePhase::FinishPrediction(std::uint32_t i, const Candidate& best) {
   // The walls are the detailed phase's business for a polyhedron, and only up to the element's
   // next event (after which it predicts again).
   if (polyhedra && !god && core_.Walled()) event = walls_->PredictPolyhedron(i, event);
-  // A change of its thrust at a given time (its schedule), or of a god object's piece, is the
-  // body's own event.
-  const double timer = god ? core_.bodies.gods.NextSwitch(i) : core_.bodies.thrusts.NextTime(i);
+  // A change of its thrust at a given time (its schedule), a god object's next piece, and the
+  // check at the end of a drag segment's horizon, are the body's own events.
+  const double timer = god ? core_.bodies.gods.NextSwitch(i)
+                           : std::min(core_.bodies.thrusts.NextTime(i), drags.CheckTime(i));
   if (timer < event.time) event = Event{MaxOf(now, timer), EventKind::kBodyTimer, 0, kNoIndex, 0};
   return event;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "world/sphere_contacts.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "dynamics/rigid_collision.hpp"
@@ -117,10 +118,20 @@ void SphereContacts::PredictEngagement(std::uint32_t k) {
   const Vec3 shift = core_.MinimumImage(d) - d;
   // Contact of the bodies themselves (the detailed phase for spheres) or separation of the
   // element spheres, whichever comes first.
-  const double contact =
-      PredictMeeting(bodies.BodyMoverOf(e.a, now), bodies.BodyMoverOf(e.b, now), shift);
   const double separation =
       PredictSeparation(bodies.MoverOf(e.a, now), bodies.MoverOf(e.b, now), shift);
+  if (bodies.HasDrag(e.a) || bodies.HasDrag(e.b)) {
+    // A body with drag: the contact on the true motions, up to the separation or a check.
+    const DragMotions& drags = bodies.paths.drags();
+    const double end = std::min({EventTime(now, separation), drags.CheckTime(e.a),
+                                 drags.CheckTime(e.b)});
+    const double contact = drag_.PairContact(e.a, e.b, shift, now, end);
+    e.contact_next = contact <= EventTime(now, separation);
+    detailed_.Schedule(k, std::min(contact, EventTime(now, separation)));
+    return;
+  }
+  const double contact =
+      PredictMeeting(bodies.BodyMoverOf(e.a, now), bodies.BodyMoverOf(e.b, now), shift);
   e.contact_next = contact <= separation;
   detailed_.Schedule(k, EventTime(now, std::min(contact, separation)));
 }

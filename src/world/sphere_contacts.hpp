@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "world/detailed_phase.hpp"
+#include "world/drag_contacts.hpp"
 #include "world/path_changes.hpp"
 #include "world/sparse_phase.hpp"
 #include "world/world_core.hpp"
@@ -18,7 +19,7 @@ class SphereContacts {
  public:
   SphereContacts(WorldCore& core, SparsePhase& sparse, DetailedPhase& detailed,
                  PathChanges& changes)
-      : core_(core), sparse_(sparse), detailed_(detailed), changes_(changes) {}
+      : core_(core), sparse_(sparse), detailed_(detailed), changes_(changes), drag_(core) {}
 
   /// Whether i and j touch (within the tolerance) and approach each other now; sets the
   /// normal from i to j and the gap (negative: overlap).
@@ -38,6 +39,7 @@ class SphereContacts {
   SparsePhase& sparse_;
   DetailedPhase& detailed_;
   PathChanges& changes_;
+  DragContacts drag_;  // the contact of an engaged pair with drag, on the true motions
 };
 
 }  // namespace sparsedyn

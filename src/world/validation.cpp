@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // World::Validate: the invariants at the current time, checked from the paths alone (no
-// overlap beyond the contact tolerance, every body inside its walls; god objects may pass
-// through each other, statics and walls).
+// overlap beyond the contact tolerance, every body inside its walls, every body with drag
+// inside its element's envelope; god objects may pass through each other, statics and walls).
 #include <optional>
 #include <string>
 
@@ -22,6 +22,20 @@ std::string BeyondWall(std::uint32_t a, int wall, double depth, double t) {
          std::to_string(wall) + " at t = " + FormatExact(t);
 }
 
+// A body with drag whose true position has left its element's envelope about the Taylor path
+// (the margin: a few roundings of the positions compared).
+std::optional<Error> CheckInsideEnvelope(const BodyStore& bodies, std::uint32_t i, double now) {
+  if (!bodies.HasDrag(i)) return std::nullopt;
+  const Path path = bodies.paths.PathOf(i);
+  const Vec3 p = bodies.paths.TruePositionAt(i, now);
+  const double off = (p - path.PositionAt(now)).norm();
+  const double allowed = bodies.envelopes.Of(i).At(now - path.t0) + 0x1p-50 * (p.norm() + 1.0);
+  if (off <= allowed) return std::nullopt;
+  return Error{"body " + std::to_string(bodies.ids.PublicOf(i)) + " is " + FormatExact(off) +
+               " from its element's path at t = " + FormatExact(now) + ", beyond its envelope " +
+               FormatExact(allowed)};
+}
+
 }  // namespace
 
 double World::Impl::GapNow(std::uint32_t i, std::uint32_t j) const {
@@ -29,8 +43,8 @@ double World::Impl::GapNow(std::uint32_t i, std::uint32_t j) const {
   const bool poly_i = bodies.IsPolyhedron(i), poly_j = bodies.IsPolyhedron(j);
   if (!poly_i && !poly_j) {
     const double now = core_.Now();
-    const Vec3 d = core_.MinimumImage(bodies.paths.PathOf(j).PositionAt(now) -
-                                      bodies.paths.PathOf(i).PositionAt(now));
+    const Vec3 d = core_.MinimumImage(bodies.paths.TruePositionAt(j, now) -
+                                      bodies.paths.TruePositionAt(i, now));
     return d.norm() - bodies.materials.Radius(i) - bodies.materials.Radius(j);
   }
   if (poly_i && poly_j) {
@@ -45,7 +59,7 @@ double World::Impl::WallGapNow(std::uint32_t i, int wall) const {
   const double now = core_.Now();
   const WallPlane plane = BoxWall(core_.settings.container, wall);
   if (!bodies.IsPolyhedron(i)) {
-    return plane.normal.dot(bodies.paths.PathOf(i).PositionAt(now)) - plane.offset -
+    return plane.normal.dot(bodies.paths.TruePositionAt(i, now)) - plane.offset -
            bodies.materials.Radius(i);
   }
   const Pose pose = bodies.RigidPathOf(i).PoseAt(now);
@@ -59,7 +73,7 @@ std::optional<Error> World::Impl::CheckAgainstStatics(std::uint32_t i) const {
   const BodyStore& bodies = core_.bodies;
   if (bodies.statics.Empty()) return std::nullopt;
   const double now = core_.Now();
-  const Aabb box = BoxOfSphere(bodies.paths.PathOf(i).PositionAt(now), bodies.materials.Radius(i));
+  const Aabb box = BoxOfSphere(bodies.paths.TruePositionAt(i, now), bodies.materials.Radius(i));
   std::optional<Error> error;
   bodies.statics.tree().ForEachOverlapping(box, [&](std::uint32_t s) {
     if (error) return;
@@ -81,8 +95,8 @@ Status World::Impl::Validate() const {
   // Pairs whose element spheres overlap (the elements of polyhedra are their bounding spheres),
   // from the grid's neighbours when there is one, else every pair.
   auto check_pair = [&](std::uint32_t i, std::uint32_t j) -> std::optional<Error> {
-    const Vec3 d = core_.MinimumImage(bodies.paths.PathOf(j).PositionAt(now) -
-                                      bodies.paths.PathOf(i).PositionAt(now));
+    const Vec3 d = core_.MinimumImage(bodies.paths.TruePositionAt(j, now) -
+                                      bodies.paths.TruePositionAt(i, now));
     const double reach = bodies.materials.Radius(i) + bodies.materials.Radius(j);
     if (d.squaredNorm() >= reach * reach) return std::nullopt;
     if (bodies.IsGod(i) && bodies.IsGod(j)) return std::nullopt;  // they pass each other
@@ -110,6 +124,7 @@ Status World::Impl::Validate() const {
     // A god object goes where it is driven, through statics and walls.
     if (bodies.IsGod(i)) continue;
     if (std::optional<Error> error = CheckAgainstStatics(i)) return *error;
+    if (std::optional<Error> error = CheckInsideEnvelope(bodies, i, now)) return *error;
     if (!core_.Walled()) continue;
     for (int w = 0; w < 6; ++w) {
       const double gap = WallGapNow(i, w);

@@ -64,8 +64,8 @@ void WallContacts::HandleSphere(std::uint32_t i) {
   const int w = sparse_.PredictionOf(i).aux;
   const WallPlane plane = BoxWall(core_.settings.container, w);
   const double now = paths.Now();
-  const Vec3 p = paths.PathOf(i).PositionAt(now);
-  const Vec3 v = paths.PathOf(i).VelocityAt(now);
+  const Vec3 p = paths.TruePositionAt(i, now);
+  const Vec3 v = paths.TrueVelocityAt(i, now);
   const double radius = materials.Radius(i);
   const double gap = plane.normal.dot(p) - plane.offset - radius;
   const double approach = plane.normal.dot(v);

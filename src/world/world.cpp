@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 
+#include "world/body_checks.hpp"
 #include "world/world_impl.hpp"
 
 namespace sparsedyn {
@@ -63,18 +64,26 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
     bodies.rigid.SetSpinRadius(index, bodies.SpinRadiusOf(index));
   }
   bodies.envelopes.Append(index, def.envelope);
+  // Drag: the body's true motion and the Taylor path of its element from now on, with an
+  // envelope that grows to at most a fraction of its radius.
+  const Drag drag = DragOf(def, core_.settings.drag);
+  const double drag_error = kDragErrorFraction * radius;
+  bodies.paths.drags().Append(index, drag, drag_error);
+  if (bodies.HasDrag(index)) bodies.StartDragSegment(index);
   bodies.thrusts.Append(index, def.thrust_schedule);
   bodies.gods.Append(index, std::move(god));
   const BodyId id = bodies.ids.Add(index);
   sparse_.queue().Resize(index + 1);  // the element's slot and prediction
-  const bool larger = radius > max_radius_;
-  max_radius_ = std::max(max_radius_, radius);
+  // The element's largest radius: the grid's cells cover it (a drag segment's envelope too).
+  const double element_radius = bodies.HasDrag(index) ? radius + drag_error : radius;
+  const bool larger = element_radius > max_radius_;
+  max_radius_ = std::max(max_radius_, element_radius);
   if (started_) {
     // A bigger body or the first envelope can change the broad phase, the first body off
     // straight lines (a thrust of its own, an envelope, a polyhedron) ends the fast paths that
     // assume them, and a body that engages must be engaged with every element it overlaps:
     // rebuild.
-    if (larger || (bodies.envelopes.Any() && sparse_.grid()) ||
+    if (larger || (bodies.envelopes.AnyOwn() && sparse_.grid()) ||
         (bodies.paths.StraightLines() && !bodies.AllOnStraightLines()) ||
         bodies.IsPolyhedron(index) || bodies.HasEnvelope(index) || bodies.IsGod(index)) {
       Start();
@@ -145,6 +154,14 @@ void World::Impl::Start() {
     if (bodies.rigid.Tracked()) {
       bodies.rigid.SetOrientation0(i, bodies.RigidPathOf(i).OrientationAt(now).normalized());
     }
+    if (bodies.HasDrag(i)) {
+      // A new drag segment from the true state now (the same motion, the same version).
+      const Vec3 p = bodies.paths.TruePositionAt(i, now);
+      const Vec3 v = bodies.paths.TrueVelocityAt(i, now);
+      bodies.paths.SetStart(i, PathStart{core_.WrapIntoBox(p), v, now});
+      bodies.StartDragSegment(i);
+      continue;
+    }
     const Path path = bodies.paths.PathOf(i).RebasedAt(now);
     bodies.paths.SetStart(i, PathStart{core_.WrapIntoBox(path.p0), path.v0, path.t0});
   }
@@ -166,6 +183,13 @@ BodyState World::Impl::StateAt(std::uint32_t i, double t) const {
                   bodies.materials.Radius(i),
                   bodies.IsGod(i) ? kInfinity : 1.0 / bodies.materials.InvMass(i),
                   sparse_.PredictionOf(i).version};
+  if (bodies.HasDrag(i)) {
+    // The true motion (DragMotion), not the Taylor path its element follows.
+    const DragState true_state = bodies.paths.drags().StateAt(i, t);
+    state.position = core_.WrapIntoBox(true_state.position);
+    state.velocity = true_state.velocity;
+    state.acceleration = true_state.acceleration;
+  }
   if (bodies.rigid.Tracked()) {
     state.orientation = bodies.RigidPathOf(i).OrientationAt(t).normalized();
     state.angular_velocity = bodies.rigid.Omega(i);
@@ -181,7 +205,7 @@ double World::Impl::KineticEnergy() const {
   for (const std::uint32_t i : bodies.ids.InPublicOrder()) {
     if (bodies.IsGod(i)) continue;  // of infinite mass: left out of the sums
     const double inv_mass = bodies.materials.InvMass(i);
-    energy += 0.5 / inv_mass * bodies.paths.PathOf(i).VelocityAt(now).squaredNorm();
+    energy += 0.5 / inv_mass * bodies.paths.TrueVelocityAt(i, now).squaredNorm();
     if (bodies.rigid.Tracked()) {
       const Eigen::Matrix3d r = bodies.RigidPathOf(i).OrientationAt(now).toRotationMatrix();
       const Vec3 w_B = r.transpose() * bodies.rigid.Omega(i);  // 1/2 w.I w in body axes
@@ -197,9 +221,9 @@ Vec3 World::Impl::AngularMomentum() const {
   Vec3 momentum = Vec3::Zero();
   for (const std::uint32_t i : bodies.ids.InPublicOrder()) {
     if (bodies.IsGod(i)) continue;
-    const Path path = bodies.paths.PathOf(i);
     const double inv_mass = bodies.materials.InvMass(i);
-    momentum += path.PositionAt(now).cross(path.VelocityAt(now)) / inv_mass;
+    momentum += bodies.paths.TruePositionAt(i, now).cross(bodies.paths.TrueVelocityAt(i, now)) /
+                inv_mass;
     if (bodies.rigid.Tracked()) {
       const Eigen::Matrix3d r = bodies.RigidPathOf(i).OrientationAt(now).toRotationMatrix();
       momentum += r * (bodies.UnitInertia(i) * (r.transpose() * bodies.rigid.Omega(i))) /
@@ -214,7 +238,7 @@ Vec3 World::Impl::Momentum() const {
   Vec3 momentum = Vec3::Zero();
   for (const std::uint32_t i : bodies.ids.InPublicOrder()) {
     if (bodies.IsGod(i)) continue;
-    momentum += bodies.paths.PathOf(i).VelocityAt(core_.Now()) / bodies.materials.InvMass(i);
+    momentum += bodies.paths.TrueVelocityAt(i, core_.Now()) / bodies.materials.InvMass(i);
   }
   return momentum;
 }
@@ -274,6 +298,15 @@ std::size_t World::BodyCount() const {
   return impl_->core_.bodies.Size() + impl_->core_.bodies.statics.Count();
 }
 bool World::IsValid(BodyId id) const { return impl_->core_.bodies.ids.Valid(id); }
+bool World::IsPolyhedron(BodyId id) const {
+  if (!IsValid(id)) return false;
+  const BodyStore& bodies = impl_->core_.bodies;
+  const std::uint32_t internal = bodies.ids.InternalOf(id.index);
+  if (StaticBodies::IsKey(internal)) {
+    return bodies.statics[StaticBodies::IndexOf(internal)].shape != kNoIndex;
+  }
+  return bodies.IsPolyhedron(internal);
+}
 BodyId World::IdOf(std::uint32_t index) const { return impl_->core_.bodies.ids.IdOfSlot(index); }
 std::size_t World::SlotCount() const { return impl_->core_.bodies.ids.SlotCount(); }
 std::vector<BodyId> World::Bodies() const {

@@ -63,8 +63,8 @@ class World::Impl {
   /// AdvanceTo, and AddBody while running when the broad phase or the fast forms must change).
   void Start();
   void Dispatch(const QueueTop& top, bool engagement);
-  /// Body i's own event (kBodyTimer): its thrust changes as its schedule says, or a god
-  /// object goes on to its plan's next piece.
+  /// Body i's own event (kBodyTimer): its thrust changes as its schedule says, a god object
+  /// goes on to its plan's next piece, or its drag segment's horizon ends (a drag check).
   void HandleBodyTimer(std::uint32_t i);
   /// God i's plan from now, from where it is, through `god` (checked).
   void Replan(std::uint32_t i, const GodDef& god);

@@ -108,6 +108,89 @@ TEST_F(CliScene, PolyhedralScenesRun) {
               1e-12 * summary["kinetic_energy_initial"].get<double>());
 }
 
+TEST_F(CliScene, JsonCountsTheBodiesByKind) {
+  // data/scenes/floor_drop.json: a static floor slab and a static ramp (boxes), two spheres and
+  // a cube; the statics are counted as static only, and the three kinds add up to "bodies".
+  const Output drop = RunCli("run " + std::string(SPARSEDYN_SOURCE_DIR) +
+                             "/data/scenes/floor_drop.json --until 0.5 --json --no-record");
+  ASSERT_EQ(drop.status, 0) << drop.out;
+  const nlohmann::json summary = nlohmann::json::parse(drop.out);
+  EXPECT_EQ(summary["bodies"], 5);
+  EXPECT_EQ(summary["bodies_by_kind"],
+            nlohmann::json({{"spheres", 2}, {"polyhedra", 1}, {"static", 2}, {"god", 0}}));
+
+  // A static sphere is static, a moving polyhedron among spheres a polyhedron.
+  std::ofstream(Path("kinds.json")) << R"({"container": {"kind": "walled", "lo": [0, 0, 0],
+      "hi": [10, 10, 10]}, "bodies": [
+      {"shape": {"sphere": {"radius": 1}}, "position": [5, 5, 5], "static": true},
+      {"shape": {"generator": "cube"}, "position": [2, 2, 2], "velocity": [1, 0, 0]},
+      {"shape": {"sphere": {"radius": 0.5}}, "position": [8, 8, 8]},
+      {"shape": {"sphere": {"radius": 0.5}}, "position": [8, 2, 8]},
+      {"shape": {"sphere": {"radius": 0.5}}, "position": [2, 8, 8]}], "duration": 1})";
+  const Output kinds = RunCli("run " + Path("kinds.json") + " --json --no-record");
+  ASSERT_EQ(kinds.status, 0) << kinds.out;
+  EXPECT_EQ(nlohmann::json::parse(kinds.out)["bodies_by_kind"],
+            nlohmann::json({{"spheres", 3}, {"polyhedra", 1}, {"static", 1}, {"god", 0}}));
+
+  // A god object is counted as one, whatever its shape (here a cube), and not as a polyhedron.
+  std::ofstream(Path("gods.json")) << R"({"container": {"kind": "walled", "lo": [0, 0, 0],
+      "hi": [10, 10, 10]}, "bodies": [
+      {"shape": {"generator": "cube"}, "position": [2, 5, 5],
+       "god": {"max_acceleration": 2, "track": [{"time": 1, "position": [3, 5, 5]}]}},
+      {"shape": {"sphere": {"radius": 0.5}}, "position": [5, 5, 8],
+       "god": {"max_acceleration": 1, "track": []}},
+      {"shape": {"sphere": {"radius": 0.5}}, "position": [8, 8, 8]}], "duration": 1})";
+  const Output gods = RunCli("run " + Path("gods.json") + " --json --no-record");
+  ASSERT_EQ(gods.status, 0) << gods.out;
+  EXPECT_EQ(nlohmann::json::parse(gods.out)["bodies_by_kind"],
+            nlohmann::json({{"spheres", 1}, {"polyhedra", 0}, {"static", 0}, {"god", 2}}));
+}
+
+TEST_F(CliScene, EveryShippedSceneRunsToItsEnd) {
+  // Each scene of data/scenes/ runs with `sparsedyn run SCENE` to start_time + duration, and its
+  // bodies by kind add up to its bodies (god_sweep.json: one god object among 300 spheres).
+  const std::filesystem::path folder = std::filesystem::path(SPARSEDYN_SOURCE_DIR) / "data/scenes";
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().string());
+    ++scenes;
+    std::ifstream in(entry.path());
+    const nlohmann::json scene = nlohmann::json::parse(in);
+    const Output run = RunCli("run " + entry.path().string() + " --json --no-record",
+                              /*with_stderr=*/true);
+    ASSERT_EQ(run.status, 0) << run.out;
+    const nlohmann::json summary = nlohmann::json::parse(run.out);
+    EXPECT_FALSE(summary.contains("error"));
+    EXPECT_EQ(summary["simulated_time"].get<double>(),
+              scene.value("start_time", 0.0) + scene.value("duration", 10.0));
+    EXPECT_EQ(summary["bodies"], scene["bodies"].size());
+    const nlohmann::json& kinds = summary["bodies_by_kind"];
+    EXPECT_EQ(kinds["spheres"].get<int>() + kinds["polyhedra"].get<int>() +
+                  kinds["static"].get<int>() + kinds["god"].get<int>(),
+              summary["bodies"].get<int>());
+    int gods = 0;
+    for (const nlohmann::json& body : scene["bodies"]) gods += body.contains("god") ? 1 : 0;
+    EXPECT_EQ(kinds["god"].get<int>(), gods);
+  }
+  EXPECT_GE(scenes, 4);
+}
+
+TEST_F(CliScene, MixedBoxKeepsItsEnergyWithSpheresAndPolyhedraTogether) {
+  // data/scenes/mixed_box.json: 20 spheres and 20 rotating polyhedra in a walled box, elastic
+  // and frictionless, so the kinetic energy is conserved through every kind of contact (the
+  // spherical-top rotation model conserves it exactly between events too).
+  const Output run = RunCli("run " + std::string(SPARSEDYN_SOURCE_DIR) +
+                            "/data/scenes/mixed_box.json --json --no-record");
+  ASSERT_EQ(run.status, 0);
+  const nlohmann::json summary = nlohmann::json::parse(run.out);
+  EXPECT_EQ(summary["bodies_by_kind"],
+            nlohmann::json({{"spheres", 20}, {"polyhedra", 20}, {"static", 0}, {"god", 0}}));
+  EXPECT_GT(summary["body_collisions"].get<int>(), 50);
+  const double energy = summary["kinetic_energy_initial"].get<double>();
+  EXPECT_NEAR(summary["kinetic_energy_final"].get<double>(), energy, 1e-12 * energy);
+}
+
 TEST_F(CliScene, MainJobRecordsTheDefaultSceneAndPrintsTheViewCommand) {
   const Output result = RunCli("run --until 1", /*with_stderr=*/false, dir_);
   ASSERT_EQ(result.status, 0);

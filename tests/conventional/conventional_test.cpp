@@ -404,6 +404,18 @@ TEST(BadInput, SpheresOverlapsOutsidersAndLateBodiesAreRefused) {
   EXPECT_FALSE(world.AddBody(Body(cube, Vec3(5.9, 5, 5), Vec3::Zero())).ok());      // overlaps
   EXPECT_FALSE(world.AddBody(Body(cube, Vec3(9.8, 5, 5), Vec3::Zero())).ok());      // beyond x wall
   EXPECT_FALSE(world.AddBody(Body(cube, Vec3(2, 2, 2), Vec3::Zero(), -1.0)).ok());  // mass
+  // A static body would be moved like any other: refused by name.
+  BodyDef floor = Body(cube, Vec3(2, 2, 2), Vec3::Zero());
+  floor.is_static = true;
+  const Result<BodyId> refused = world.AddBody(floor);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("no static bodies"), std::string::npos);
+  // So would a god object: refused by name too.
+  BodyDef hand = Body(cube, Vec3(2, 2, 2), Vec3::Zero());
+  hand.god = GodDef{.max_acceleration = 1.0, .track = {}};
+  const Result<BodyId> no_god = world.AddBody(hand);
+  ASSERT_FALSE(no_god.ok());
+  EXPECT_NE(no_god.error().message.find("no god objects"), std::string::npos);
   EXPECT_EQ(world.BodyCount(), 1u);
   ASSERT_TRUE(world.AdvanceTo(0.1).ok());
   EXPECT_FALSE(world.AddBody(Body(cube, Vec3(2, 2, 2), Vec3::Zero())).ok());  // after the start
@@ -443,6 +455,8 @@ TEST(Cli, ConventionalRunPrintsTheContractKeysAndItsOwn) {
   EXPECT_EQ(j["dt"], 0.01);
   EXPECT_EQ(j["steps"], 50);
   EXPECT_EQ(j["bodies"], 100);
+  EXPECT_EQ(j["bodies_by_kind"],
+            nlohmann::json({{"spheres", 0}, {"polyhedra", 100}, {"static", 0}, {"god", 0}}));
   EXPECT_EQ(j["simulated_time"], 0.5);
 }
 

@@ -54,12 +54,12 @@ TEST(SceneFileErrors, MissingOrEmptyBodies) {
 TEST(SceneFileErrors, UnknownKeysNameTheirPathAndTheAllowedKeys) {
   EXPECT_EQ(ErrorOf(OneBody(kSphere, R"("gravty": [0, 0, -9.81])")),
             "s.json: gravty: unknown key (allowed here: name, description, seed, packing, "
-            "start_time, duration, gravity, broadphase, grid_cells_per_body, stall_event_limit, "
-            "container, tolerances, bodies)");
+            "start_time, duration, gravity, drag, broadphase, grid_cells_per_body, "
+            "stall_event_limit, container, tolerances, bodies)");
   EXPECT_EQ(ErrorOf(OneBody(std::string(kSphere) + R"(, "velocty": [1, 0, 0])")),
             "s.json: bodies[0].velocty: unknown key (allowed here: shape, position, orientation, "
             "velocity, angular_velocity, thrust, thrust_schedule, mass, density, restitution, "
-            "friction, static, god)");
+            "friction, drag, static, god)");
   EXPECT_EQ(ErrorOf(OneBody(R"("shape": {"sphere": {"radius": 1, "r": 2}})")),
             "s.json: bodies[0].shape.sphere.r: unknown key (allowed here: radius)");
 }

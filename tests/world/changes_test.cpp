@@ -233,6 +233,27 @@ TEST(WorldChanges, AKickAtAPointChangesVelocityAndSpinAsTheClosedFormSays) {
   EXPECT_TRUE(b.angular_velocity.isApprox(Vec3(0, -1.0 / (0.4 * 4.0 * 0.25), 0), 1e-14));
 }
 
+TEST(WorldChanges, AKickInAPeriodicBoxTakesTheLeverArmOfTheNearestImage) {
+  // The ball crosses the +x face at t = 0.5; at t = 2 StateAt reports it wrapped to x = 1.5. A
+  // kick half a radius off that centre spins it as one off the unwrapped centre would:
+  // dw = (0.5, 0, 0) x (0, 0, 2) / (2/5 m r^2), not the lever arm of a box length.
+  WorldSettings settings;
+  settings.container = Container::PeriodicBox(Vec3::Zero(), Vec3::Constant(10));
+  World world(settings);
+  const BodyId ball =
+      *world.AddBody({.radius = 0.5, .position = {9.5, 5, 5}, .velocity = {1, 0, 0}, .mass = 4.0});
+  ASSERT_TRUE(world.AdvanceTo(2.0));
+  const Vec3 centre = world.StateAt(ball, 2.0).position;
+  ASSERT_NEAR(centre.x(), 1.5, 1e-12);
+  for (const Vec3& image : {Vec3(0, 0, 0), Vec3(10, 0, 0), Vec3(-10, 0, 0)}) {
+    SCOPED_TRACE("point image " + std::to_string(image.x()));
+    const Vec3 before = world.StateAt(ball, 2.0).angular_velocity;
+    ASSERT_TRUE(world.ApplyImpulse(ball, {0, 0, 2}, centre + image + Vec3(0.5, 0, 0)));
+    const Vec3 spin = world.StateAt(ball, 2.0).angular_velocity - before;
+    EXPECT_TRUE(spin.isApprox(Vec3(0, -1.0 / (0.4 * 4.0 * 0.25), 0), 1e-12)) << spin.transpose();
+  }
+}
+
 TEST(WorldChanges, AVelocityChangeThenRunningOnIsAFreshWorldsFuture) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));

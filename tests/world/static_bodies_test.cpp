@@ -184,6 +184,38 @@ TEST(StaticBodies, PebblesOnAHundredMetreSlabKeepTheirEnergyAndNeverSinkIn) {
   EXPECT_LE(world.MaxPenetration(), 1e-9 * 0.02 * 2);
 }
 
+TEST(StaticBodies, IsStaticAndIsPolyhedronTellEachBodysKind) {
+  // Moving and static spheres and polyhedra and a god cube, added before and after the start
+  // and after a removal that frees a slot (the kinds follow the handles, not the internal
+  // order); a removed handle is none of them.
+  World world;
+  const BodyId slab = world.AddBody(Static({.shape = Box(Vec3(5, 5, 0.5))})).value();
+  const BodyId ball = world.AddBody({.radius = 0.5, .position = {0, 0, 2}}).value();
+  const BodyId pillar = world.AddBody(Static({.radius = 0.5, .position = {3, 0, 1.5}})).value();
+  const BodyId cube =
+      world.AddBody({.shape = Box(Vec3(0.5, 0.5, 0.5)), .position = {-3, 0, 2}}).value();
+  ASSERT_TRUE(world.AdvanceTo(0.5));
+  ASSERT_TRUE(world.RemoveBody(ball));
+  const BodyId late = world.AddBody({.radius = 0.25, .position = {0, 3, 3}}).value();
+  EXPECT_EQ(late.index, ball.index);
+  BodyDef hand{.shape = Box(Vec3(0.5, 0.5, 0.5)), .position = {0, -3, 3}};
+  hand.god = GodDef{1.0, {{.time = 1.0, .position = {0, -3, 4}}}};
+  const BodyId god = world.AddBody(hand).value();
+  const struct {
+    BodyId id;
+    bool is_static, is_god, is_polyhedron;
+  } expected[] = {{slab, true, false, true},  {pillar, true, false, false},
+                  {cube, false, false, true}, {late, false, false, false},
+                  {god, false, true, true},   {ball, false, false, false}};
+  for (const auto& e : expected) {
+    SCOPED_TRACE("slot " + std::to_string(e.id.index) + " generation " +
+                 std::to_string(e.id.generation));
+    EXPECT_EQ(world.IsStatic(e.id), e.is_static);
+    EXPECT_EQ(world.IsGod(e.id), e.is_god);
+    EXPECT_EQ(world.IsPolyhedron(e.id), e.is_polyhedron);
+  }
+}
+
 TEST(StaticBodies, MayTouchAtTheStartButNotOverlapAndNeverMove) {
   World world;
   BodyDef slab;

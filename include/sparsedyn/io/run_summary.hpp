@@ -26,10 +26,12 @@ struct RunContext {
 double ReportedPacking(const SceneDescription& scene);
 
 /// The summary of a run as one JSON object, the object `sparsedyn run --json` prints (without
-/// the recording's keys): bodies, simulated_time, wall_seconds, events, events_by_kind,
-/// stale_events, meetings, collisions, kinetic energy and momentum at the start and now,
-/// max_penetration, bytes_per_body and the other counters of Statistics. Rates per second are
-/// 0 when `context.wall_seconds` is 0. The Python package's `World.stats()` returns the same.
+/// the recording's keys): bodies, bodies_by_kind (spheres, polyhedra, static: the moving
+/// spheres, the moving polyhedra and the static bodies of either shape, adding up to bodies),
+/// simulated_time, wall_seconds, events, events_by_kind, stale_events, meetings, collisions,
+/// kinetic energy and momentum at the start and now, max_penetration, bytes_per_body and the
+/// other counters of Statistics. Rates per second are 0 when `context.wall_seconds` is 0. The
+/// Python package's `World.stats()` returns the same.
 std::string RunSummaryJson(const World& world, const RunContext& context);
 
 }  // namespace sparsedyn

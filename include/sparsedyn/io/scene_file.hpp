@@ -58,6 +58,9 @@ struct SceneBody {
   /// "god": {"max_acceleration": A, "track": [{"time": t, "position": [x, y, z],
   /// "velocity": [x, y, z] (optional)}, ...]}: a god object (BodyDef::god).
   std::optional<GodDef> god;
+  /// "drag": {"linear": c1, "quadratic": c2}, the body's own (BodyDef::drag); unset: the
+  /// scene's top-level "drag" (WorldSettings::drag) applies.
+  std::optional<Drag> drag;
 };
 
 /// A scene as a file describes it: the World's settings, shapes, bodies and how long to run.
@@ -136,7 +139,7 @@ SceneDescription FinalScene(const SceneDescription& scene, const World& world,
 
 /// A World holding the scene's bodies, added in order. Nothing is returned half-built: an Error
 /// names the body ("bodies[12]: ...") when the World refuses it (overlap, outside the
-/// container, a World mixing spheres and polyhedra...).
+/// container, a static body in a periodic box...).
 Result<World> BuildWorld(const SceneDescription& scene);
 
 }  // namespace sparsedyn

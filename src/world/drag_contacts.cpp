@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: MIT
+#include "world/drag_contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "math/event_time.hpp"
+#include "sparse/meeting.hpp"
+#include "world/contact_band.hpp"
+
+namespace sparsedyn {
+namespace {
+
+// The share of the true gap each envelope may take in a step: a pair's two envelopes then sum
+// to a quarter of the gap and a wall's one to a quarter, so the true gap where the paths'
+// spheres meet is at most half the gap before (the paths' gap is 0 there, the true one within
+// the envelopes of it on either side).
+constexpr double kPairErrorShare = 0.125;
+constexpr double kWallErrorShare = 0.25;
+// A contact is reported where the true gap is within half the band and clearly closing, so
+// that the handler, which asks for the band and any closing with other roundings of the same
+// state, never finds it early (the steps converge to half the band: see the shares above).
+constexpr double kAcceptShare = 0.5;
+constexpr double kClosingMargin = 1e-12;
+
+// The next time after t that a step reaches: EventTime(t, dt), but at least one ulp on (a gap
+// wider than the band takes time to close, so this is not late).
+double StepTo(double t, double dt) {
+  const double next = EventTime(t, dt);
+  return next > t ? next : std::nextafter(t, kInfinity);
+}
+
+// Where the next step starts: the paths' meeting dt after t, or the end of the horizon h of
+// the local segments when they do not meet within it (infinity: never).
+double NextStart(double t, double dt, double h) {
+  if (dt != kInfinity) return StepTo(t, dt);
+  return h == kInfinity ? kInfinity : StepTo(t, h);
+}
+
+}  // namespace
+
+DragContacts::Local DragContacts::LocalAt(std::uint32_t i, double t, double max_error,
+                                         double max_horizon) const {
+  const BodyStore& bodies = core_.bodies;
+  const double radius = bodies.materials.Radius(i);
+  if (!bodies.HasDrag(i)) return Local{bodies.BodyMoverOf(i, t), kInfinity};
+  const TaylorSegment segment =
+      bodies.paths.drags().LocalSegment(i, t, max_error, max_horizon);
+  return Local{MoverAt(segment.path, radius, segment.envelope, t), segment.horizon};
+}
+
+DragContacts::BodyNow DragContacts::TrueStateOf(std::uint32_t i, double t) const {
+  // One evaluation of the DragMotion for both (the integrator walks from its start each time).
+  const ElementPaths& paths = core_.bodies.paths;
+  if (!paths.drags().Has(i)) {
+    const Path path = paths.PathOf(i);
+    return BodyNow{path.PositionAt(t), path.VelocityAt(t)};
+  }
+  const DragState state = paths.drags().StateAt(i, t);
+  return BodyNow{state.position, state.velocity};
+}
+
+double DragContacts::PairContact(std::uint32_t i, std::uint32_t j, const Vec3& shift,
+                                 double begin, double end) {
+  const double reach = core_.bodies.materials.Radius(i) + core_.bodies.materials.Radius(j);
+  const double band = core_.settings.contact_tolerance * reach;
+  Statistics& stats = core_.observers.stats();
+  double t = begin;
+  for (int step = 0; step < kIterationsPerPrediction; ++step) {
+    if (!(t < end)) return kInfinity;
+    // The true gap at t, and whether it closes: in the band and closing is the contact.
+    const BodyNow a_now = TrueStateOf(i, t), b_now = TrueStateOf(j, t);
+    const Vec3 d = b_now.position + shift - a_now.position;
+    const Vec3 dv = b_now.velocity - a_now.velocity;
+    const double distance = d.norm();
+    const double gap = distance - reach;
+    const bool closing = d.dot(dv) < -kClosingMargin * distance * dv.norm();
+    if (gap <= kAcceptShare * band && closing) return t;
+    // The paths' spheres about t with envelopes below a share of the gap (or of the band).
+    ++stats.drag_steps;
+    const double max_error = kPairErrorShare * std::max(gap, band);
+    const Local a = LocalAt(i, t, max_error, end - t);
+    const Local b = LocalAt(j, t, max_error, end - t);
+    const double h = std::min({a.horizon, b.horizon, end - t});
+    const double dt = PredictMeeting(a.mover, b.mover, shift, h);
+    if (gap <= band && !(dt > 0)) {
+      // Touching without closing (a pair that has just collided, a graze): not before the band
+      // could have been closed.
+      t = BandExit(t, band, dv.norm() + a.mover.r1 + b.mover.r1,
+                   (b.mover.a - a.mover.a).norm() + a.mover.r2 + b.mover.r2);
+    } else {
+      t = NextStart(t, dt, h);
+    }
+  }
+  return t;  // unfinished: looked at again from here
+}
+
+double DragContacts::WallContact(std::uint32_t i, const WallPlane& plane, double begin,
+                                 double end) {
+  const double radius = core_.bodies.materials.Radius(i);
+  const double band = core_.settings.contact_tolerance * radius;
+  Statistics& stats = core_.observers.stats();
+  double t = begin;
+  for (int step = 0; step < kIterationsPerPrediction; ++step) {
+    if (!(t < end)) return kInfinity;
+    const BodyNow now = TrueStateOf(i, t);
+    const double gap = plane.normal.dot(now.position) - plane.offset - radius;
+    const Vec3& v = now.velocity;
+    const double approach = plane.normal.dot(v);
+    if (gap <= kAcceptShare * band && approach < -kClosingMargin * v.norm()) return t;
+    ++stats.drag_steps;
+    const Local a = LocalAt(i, t, kWallErrorShare * std::max(gap, band), end - t);
+    const double h = std::min(a.horizon, end - t);
+    const double dt = PredictWallMeeting(a.mover, plane.normal, plane.offset, h);
+    if (gap <= band && !(dt > 0)) {
+      t = BandExit(t, band, std::abs(approach) + a.mover.r1, a.mover.a.norm() + a.mover.r2);
+    } else {
+      t = NextStart(t, dt, h);
+    }
+  }
+  return t;
+}
+
+double DragContacts::FirstWallContact(std::uint32_t i, double end, std::uint8_t& wall) {
+  const BodyStore& bodies = core_.bodies;
+  const double now = bodies.paths.Now();
+  const Mover element = bodies.MoverOf(i, now);
+  const std::uint8_t held = bodies.paths.accelerations().HeldBy(i);
+  double best = kInfinity;
+  wall = 0;
+  for (int w = 0; w < 6; ++w) {
+    if ((held >> w & 1u) != 0) continue;
+    const WallPlane plane = BoxWall(core_.settings.container, w);
+    // The element reaches the wall first; one that overlaps it already may hold a body that
+    // touches it at any time.
+    const bool overlapping = plane.normal.dot(element.p) - plane.offset <= element.r0;
+    double begin = now;
+    if (!overlapping) {
+      const double dt = PredictWallMeeting(element, plane.normal, plane.offset);
+      if (dt == kInfinity) continue;
+      begin = std::max(now, EventTime(now, dt));
+    }
+    const double limit = std::min(end, best);
+    if (!(begin < limit)) continue;
+    const double t = WallContact(i, plane, begin, limit);
+    if (t < best) {
+      best = t;
+      wall = static_cast<std::uint8_t>(w);
+    }
+  }
+  return best;
+}
+
+}  // namespace sparsedyn

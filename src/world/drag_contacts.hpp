@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+
+#include "sparse/mover.hpp"
+#include "world/box_walls.hpp"
+#include "world/world_core.hpp"
+
+namespace sparsedyn {
+
+/// Contact times of bodies with drag on their TRUE motions (App. E's convergence, App. H.2):
+/// conservative advancement over local Taylor segments of the DragMotions whose envelopes
+/// shrink with the gap (docs/dynamics.md, "Drag in the World"). From time t with true gap g,
+/// each body's segment about t gets max_error = g/8 (a pair) or g/4 (a wall); the first time
+/// the quadratic paths' gap minus both envelopes reaches 0 (PredictMeeting, never late) is a
+/// time before which the true bodies cannot touch, and at which their true gap is at most half
+/// of g. So the gap halves or better per step, down to the contact band (contact_tolerance times
+/// the summed radii), where the envelopes are below an eighth of the band: the contact is
+/// reported there, never late and inside the band. A body without drag takes part with its
+/// exact path (no envelope).
+class DragContacts {
+ public:
+  explicit DragContacts(WorldCore& core) : core_(core) {}
+
+  /// The first time in [begin, end) at which bodies i and j (j's periodic image at `shift`;
+  /// one of them at least with drag) touch within the contact band while approaching, on their
+  /// true motions; a time before it when kIterationsPerPrediction steps did not finish (an
+  /// early event that predicts again from there); kInfinity when they do not touch before end.
+  /// begin >= now.
+  double PairContact(std::uint32_t i, std::uint32_t j, const Vec3& shift, double begin,
+                     double end);
+  /// The same for body i (with drag) and the wall `plane`.
+  double WallContact(std::uint32_t i, const WallPlane& plane, double begin, double end);
+  /// Body i's (with drag) first contact with a wall of the walled box before `end`, its wall
+  /// in `wall`: the element (its envelope included) reaches the wall no later than the body,
+  /// from there WallContact. The walls that hold i are left out (it moves along them).
+  double FirstWallContact(std::uint32_t i, double end, std::uint8_t& wall);
+
+ private:
+  // Body i's sphere on its true motion about t: the local Taylor segment with envelope at most
+  // max_error over its horizon, or the exact path of a body without drag.
+  struct Local {
+    Mover mover;
+    double horizon;
+  };
+  Local LocalAt(std::uint32_t i, double t, double max_error, double max_horizon) const;
+  // Body i's true position and velocity at t.
+  struct BodyNow {
+    Vec3 position;
+    Vec3 velocity;
+  };
+  BodyNow TrueStateOf(std::uint32_t i, double t) const;
+
+  WorldCore& core_;
+};
+
+}  // namespace sparsedyn
