@@ -9,13 +9,21 @@
 //   mass density), against BM_Thesis. Target: at least 0.5x.
 // Each run builds its scene, settles for 1 s (not timed), then times 4 simulated seconds; the
 // counter is collisions per CPU second (process time, robust against other jobs).
+// - BM_EnvelopeCost: App. I.2's cost of error envelopes. The gas (N = 1000, packing 0.05, on
+//   AllPairs for every variant, since a body with an envelope of its own takes the World
+//   there) with `percent` of its bodies carrying a growing envelope e1 = dr * <|v|>, dr the
+//   radius's relative growth per radius travelled (the thesis's dr); the counters are the cost
+//   per collision (events, element meetings, CPU time) to set against the percent = 0 run and
+//   the thesis's factor 1 + dr + dr^2/3 (docs/benchmarks.md, "Real scenes").
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <ctime>
 #include <string>
 
+#include "scenes/gas.hpp"
 #include "scenes/thesis.hpp"
+#include "bench/support/enskog_rate.hpp"
 #include "sparsedyn/io/scene_file.hpp"
 
 namespace sparsedyn {
@@ -98,6 +106,67 @@ void BM_Thesis(benchmark::State& state) { RunScene(state, Variant::kThesis); }
 void BM_ThesisOnSlab(benchmark::State& state) { RunScene(state, Variant::kSlab); }
 void BM_Mixed(benchmark::State& state) { RunScene(state, Variant::kMixed); }
 
+void BM_EnvelopeCost(benchmark::State& state) {
+  const auto percent = static_cast<std::uint32_t>(state.range(0));
+  const double dr = static_cast<double>(state.range(1)) / 100.0;
+  scenes::GasOptions options;
+  options.n = 1000;
+  Result<std::vector<BodyDef>> bodies = scenes::MakeGasBodies(options);
+  if (!bodies) {
+    state.SkipWithError(bodies.error().message.c_str());
+    return;
+  }
+  double mean_speed = 0;
+  for (const BodyDef& body : *bodies) mean_speed += body.velocity.norm();
+  mean_speed /= static_cast<double>(bodies->size());
+  // Every (100 / percent)-th body, spread evenly through the (random) gas.
+  std::uint32_t carried = 0;
+  for (std::uint32_t i = 0; i < options.n; ++i) {
+    if ((i + 1) * percent / 100 > i * percent / 100) {
+      (*bodies)[i].envelope.e1 = dr * mean_speed;
+      ++carried;
+    }
+  }
+  WorldSettings settings;
+  const double side = scenes::GasBoxSide(options);
+  settings.container = Container::PeriodicBox(Vec3::Zero(), Vec3::Constant(side));
+  settings.broadphase = Broadphase::kAllPairs;
+  const double rate = bench::CollisionRate(options.packing);
+  double collisions = 0, cpu = 0, events = 0, meetings = 0, early = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    World world(settings);
+    for (const BodyDef& body : *bodies) {
+      if (!world.AddBody(body)) state.SkipWithError("a body was refused");
+    }
+    if (!world.AdvanceTo(0.5 / rate)) state.SkipWithError("stalled while settling");
+    const Statistics before = world.Stats();
+    state.ResumeTiming();
+    const double start = CpuSeconds();
+    if (!world.AdvanceTo(5.5 / rate)) state.SkipWithError("stalled");
+    cpu += CpuSeconds() - start;
+    state.PauseTiming();
+    if (!world.Validate()) state.SkipWithError("invalid at the end");
+    const Statistics& after = world.Stats();
+    collisions += static_cast<double>(after.collisions - before.collisions);
+    events += static_cast<double>(after.events - before.events);
+    meetings += static_cast<double>(after.meetings - before.meetings);
+    early += static_cast<double>(after.early_events - before.early_events);
+    state.ResumeTiming();
+  }
+  state.counters["carriers"] = carried;
+  state.counters["collisions/cpu_s"] = collisions / cpu;
+  state.counters["events/collision"] = events / collisions;
+  state.counters["meetings/collision"] = meetings / collisions;
+  state.counters["early/collision"] = early / collisions;
+  state.counters["thesis_factor"] = 1 + dr + dr * dr / 3;
+}
+
+BENCHMARK(BM_EnvelopeCost)
+    ->ArgsProduct({{0, 1, 10, 100}, {10, 100}})
+    ->ArgNames({"percent", "dr%"})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 BENCHMARK(BM_Thesis)->Arg(1000)->Arg(10000)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_ThesisOnSlab)->Arg(1000)->Arg(10000)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_Mixed)->Arg(1000)->Arg(10000)->Unit(benchmark::kSecond)->Iterations(1);

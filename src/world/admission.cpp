@@ -85,8 +85,8 @@ Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t s
 
 std::optional<Error> Admission::CheckDragCombination(const BodyDef& def,
                                                      const std::string& body) const {
-  // Drag's contacts are predicted on true motions for sphere pairs and walls only: drag with
-  // polyhedra, static bodies or god objects in the World is not supported yet
+  // Drag's contacts are predicted on true motions for spheres against spheres, walls, static
+  // bodies and god spheres: drag on or beside a moving polyhedron is not supported yet
   // (docs/dynamics.md).
   const BodyStore& bodies = core_.bodies;
   if (def.god && def.drag && !def.drag->IsZero()) {
@@ -96,21 +96,17 @@ std::optional<Error> Admission::CheckDragCombination(const BodyDef& def,
     const std::string at = body + "drag ";
     if (def.shape != nullptr) return Error{at + "on a polyhedron is not supported yet"};
     if (!def.envelope.IsZero()) return Error{at + "and an envelope together are not supported"};
-    if (bodies.rigid.AnyPolyhedron() || !bodies.statics.Empty()) {
-      return Error{at + "in a World with polyhedra or static bodies is not supported yet"};
+    if (bodies.rigid.AnyPolyhedron()) {
+      return Error{at + "in a World with moving polyhedra is not supported yet"};
     }
-    if (bodies.gods.Any()) return Error{at + "in a World with god objects is not supported yet"};
     if (core_.settings.contact_tolerance < kMinDragContactTolerance) {
       // The message's 1e-12 is kMinDragContactTolerance.
       return Error{at + "needs settings.contact_tolerance >= 1e-12, got " +
                    FormatExact(core_.settings.contact_tolerance)};
     }
   }
-  if ((def.shape != nullptr || def.is_static) && bodies.paths.drags().Any()) {
-    return Error{body + "a polyhedron or static body in a World with drag is not supported yet"};
-  }
-  if (def.god && bodies.paths.drags().Any()) {
-    return Error{body + "a god object in a World with drag is not supported yet"};
+  if (def.shape != nullptr && !def.is_static && bodies.paths.drags().Any()) {
+    return Error{body + "a moving polyhedron in a World with drag is not supported yet"};
   }
   return std::nullopt;
 }

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "math/event_time.hpp"
+#include "narrow/point_features.hpp"
+#include "narrow/sphere_contact.hpp"
 #include "sparse/meeting.hpp"
 #include "world/contact_band.hpp"
 
@@ -43,10 +45,13 @@ DragContacts::Local DragContacts::LocalAt(std::uint32_t i, double t, double max_
                                          double max_horizon) const {
   const BodyStore& bodies = core_.bodies;
   const double radius = bodies.materials.Radius(i);
-  if (!bodies.HasDrag(i)) return Local{bodies.BodyMoverOf(i, t), kInfinity};
+  if (!bodies.HasDrag(i)) {
+    return Local{bodies.BodyMoverOf(i, t), bodies.paths.PathOf(i), kInfinity};
+  }
   const TaylorSegment segment =
       bodies.paths.drags().LocalSegment(i, t, max_error, max_horizon);
-  return Local{MoverAt(segment.path, radius, segment.envelope, t), segment.horizon};
+  return Local{MoverAt(segment.path, radius, segment.envelope, t), segment.path,
+               segment.horizon};
 }
 
 DragContacts::BodyNow DragContacts::TrueStateOf(std::uint32_t i, double t) const {
@@ -114,6 +119,72 @@ double DragContacts::WallContact(std::uint32_t i, const WallPlane& plane, double
     const double dt = PredictWallMeeting(a.mover, plane.normal, plane.offset, h);
     if (gap <= band && !(dt > 0)) {
       t = BandExit(t, band, std::abs(approach) + a.mover.r1, a.mover.a.norm() + a.mover.r2);
+    } else {
+      t = NextStart(t, dt, h);
+    }
+  }
+  return t;
+}
+
+double DragContacts::StaticContact(std::uint32_t i, std::uint32_t s, double band, double begin,
+                                   double end, std::optional<FeatureId>& feature) {
+  const BodyStore& bodies = core_.bodies;
+  const StaticBodies::Static& st = bodies.statics[s];
+  const double radius = bodies.materials.Radius(i);
+  const TrackedPolyhedron* polyhedron =
+      st.shape == kNoIndex ? nullptr : bodies.rigid.shapes()[st.shape].tracked.get();
+  const RigidPath fixed_path{Path{st.pose.translation, Vec3::Zero(), Vec3::Zero(), begin},
+                             st.pose.rotation, Vec3::Zero()};
+  const Mover fixed{st.pose.translation, Vec3::Zero(), Vec3::Zero(), st.radius, 0.0, 0.0};
+  Statistics& stats = core_.observers.stats();
+  double t = begin;
+  for (int step = 0; step < kIterationsPerPrediction; ++step) {
+    if (!(t < end)) return kInfinity;
+    // The true gap at t along the normal from the static to the centre, and whether it closes.
+    const BodyNow now = TrueStateOf(i, t);
+    Vec3 normal;
+    double gap = 0.0;
+    if (polyhedron != nullptr) {
+      const PointClosest closest =
+          FindClosestFeatureToPoint(*polyhedron, st.pose, now.position, feature);
+      feature = closest.feature;
+      normal = closest.normal;
+      gap = closest.distance - radius;
+    } else {
+      const Vec3 d = now.position - st.pose.translation;
+      const double distance = d.norm();
+      normal = d / distance;
+      gap = distance - radius - st.radius;
+    }
+    const Vec3& v = now.velocity;
+    if (gap <= kAcceptShare * band && normal.dot(v) < -kClosingMargin * v.norm()) return t;
+    ++stats.drag_steps;
+    // A pair's share although the static is exact: a polyhedron's contact is reported within
+    // an eighth of the band, and the step must still end within half the gap.
+    const double max_error = kPairErrorShare * std::max(gap, band);
+    const Local a = LocalAt(i, t, max_error, end - t);
+    const double h = std::min(a.horizon, end - t);
+    double dt = kInfinity;
+    if (polyhedron != nullptr) {
+      // The local sphere grown by the envelope's bound holds the true one over the horizon:
+      // it reaches the polyhedron no later, where the true gap is at most 2 max_error + band/8.
+      ContactPredictionOptions options;
+      options.tolerance = 0.125 * band;
+      options.max_iterations = kIterationsPerPrediction;
+      options.spin_radius_a = 0.0;
+      const SphereContactPrediction p =
+          PredictSphereContact(*polyhedron, fixed_path, a.path, radius + max_error, t, t + h,
+                               feature, options);
+      stats.detail_iterations += static_cast<std::uint64_t>(p.iterations);
+      if (p.kind != ContactPrediction::Kind::kNone) {
+        feature = p.closest.feature;
+        dt = std::max(0.0, p.time - t);
+      }
+    } else {
+      dt = PredictMeeting(a.mover, fixed, Vec3::Zero(), h);
+    }
+    if (gap <= band && !(dt > 0)) {
+      t = BandExit(t, band, v.norm() + a.mover.r1, a.mover.a.norm() + a.mover.r2);
     } else {
       t = NextStart(t, dt, h);
     }

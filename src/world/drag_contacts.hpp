@@ -2,8 +2,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "sparse/mover.hpp"
+#include "sparsedyn/geometry/convex_polyhedron.hpp"
 #include "world/box_walls.hpp"
 #include "world/world_core.hpp"
 
@@ -36,12 +38,19 @@ class DragContacts {
   /// in `wall`: the element (its envelope included) reaches the wall no later than the body,
   /// from there WallContact. The walls that hold i are left out (it moves along them).
   double FirstWallContact(std::uint32_t i, double end, std::uint8_t& wall);
+  /// The same for body i (a sphere with drag) and static body s, whose pair's contact band is
+  /// `band` (StaticContacts::Tolerance). A static polyhedron is met by i's local sphere with
+  /// its radius grown by the envelope's bound (PredictSphereContact to an eighth of the band);
+  /// `feature` is the polyhedron's closest feature, warm start in and the last walk's out.
+  double StaticContact(std::uint32_t i, std::uint32_t s, double band, double begin, double end,
+                       std::optional<FeatureId>& feature);
 
  private:
   // Body i's sphere on its true motion about t: the local Taylor segment with envelope at most
   // max_error over its horizon, or the exact path of a body without drag.
   struct Local {
     Mover mover;
+    Path path;
     double horizon;
   };
   Local LocalAt(std::uint32_t i, double t, double max_error, double max_horizon) const;

@@ -43,7 +43,9 @@ StaticContacts::Touch StaticContacts::TouchNow(std::uint32_t i, std::uint32_t s,
   const double now = core_.Now();
   const bool moving_polyhedron = bodies.IsPolyhedron(i);
   const bool static_polyhedron = st.shape != kNoIndex;
-  const Pose pose_i = bodies.RigidPathOf(i).PoseAt(now);
+  Pose pose_i = bodies.RigidPathOf(i).PoseAt(now);
+  // A body with drag is where its true motion is (its element's path is within an envelope).
+  if (bodies.HasDrag(i)) pose_i.translation = bodies.paths.PositionNow(i);
   Touch touch;
   if (moving_polyhedron && static_polyhedron) {
     const BodyShape& shape_i = bodies.rigid.ShapeOf(i);
@@ -93,6 +95,10 @@ void StaticContacts::PredictEngagement(std::uint32_t k) {
   const double tolerance = Tolerance(i, s);
   const std::optional<FeaturePair> warm =
       e.has_features ? std::optional<FeaturePair>(e.features) : std::nullopt;
+  if (bodies.HasDrag(i)) {
+    PredictDragEngagement(k, now);
+    return;
+  }
   const Touch touch = TouchNow(i, s, warm);
   e.features = touch.features;
   e.has_features = true;
@@ -170,9 +176,14 @@ void StaticContacts::HandleContact(std::uint32_t k) {
     return;
   }
   if (Collide(i, s, touch)) return;
-  // Touching, but no point approaches: look again once the band could have been closed.
   const BodyStore& bodies = core_.bodies;
   const double now = core_.Now();
+  if (bodies.HasDrag(i)) {
+    // Touching, but not approaching: the true motion from just after now.
+    PredictDragEngagement(k, std::nextafter(now, kInfinity));
+    return;
+  }
+  // Touching, but no point approaches: look again once the band could have been closed.
   const Path& path = bodies.paths.PathOf(i);
   const double speed =
       path.VelocityAt(now).norm() + bodies.rigid.SpinRadius(i) * bodies.rigid.Omega(i).norm();
@@ -183,6 +194,27 @@ void StaticContacts::HandleContact(std::uint32_t k) {
   detailed_.Schedule(k, std::min(again, exit));
 }
 
+void StaticContacts::PredictDragEngagement(std::uint32_t k, double begin) {
+  Statistics& stats = core_.observers.stats();
+  const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_detailed);
+  Engagements::Engagement& e = detailed_.engagements()[k];
+  const std::uint32_t i = e.a, s = StaticBodies::IndexOf(e.b);
+  const double exit = ExitTime(i, s);
+  const double end = std::min(exit, core_.bodies.paths.drags().CheckTime(i));
+  std::optional<FeatureId> feature =
+      e.has_features ? std::optional<FeatureId>(e.features.a) : std::nullopt;
+  ++stats.detail_predictions;
+  const double contact = drag_.StaticContact(i, s, Tolerance(i, s), begin, end, feature);
+  if (feature) {
+    e.features.a = *feature;
+    e.has_features = true;
+  }
+  // An unfinished search (a time before end) is an early contact event that predicts again.
+  e.contact_next = contact < end;
+  e.checkpoint = false;
+  detailed_.Schedule(k, e.contact_next ? contact : exit);
+}
+
 bool StaticContacts::Collide(std::uint32_t i, std::uint32_t s, const Touch& touch) {
   const BodyStore& bodies = core_.bodies;
   Statistics& stats = core_.observers.stats();
@@ -191,7 +223,8 @@ bool StaticContacts::Collide(std::uint32_t i, std::uint32_t s, const Touch& touc
   RigidImpulseResult result;
   {
     const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
-    const Pose pose_i = bodies.RigidPathOf(i).PoseAt(now);
+    Pose pose_i = bodies.RigidPathOf(i).PoseAt(now);
+    if (bodies.HasDrag(i)) pose_i.translation = bodies.paths.PositionNow(i);
     RigidBodyState moving{pose_i.translation, bodies.paths.VelocityNow(i), bodies.rigid.Omega(i),
                           bodies.materials.InvMass(i),
                           bodies.InvInertiaWorld(i, pose_i.rotation)};

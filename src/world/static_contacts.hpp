@@ -6,6 +6,7 @@
 #include "dynamics/rigid_collision.hpp"
 #include "motion/rigid_path.hpp"
 #include "world/detailed_phase.hpp"
+#include "world/drag_contacts.hpp"
 #include "world/path_changes.hpp"
 #include "world/sparse_phase.hpp"
 #include "world/world_core.hpp"
@@ -17,12 +18,13 @@ namespace sparsedyn {
 /// reaches the static's box (StaticTree) and ends when it leaves it; the contact is predicted
 /// as for moving pairs (PredictContact, PredictSphereContact, PredictMeeting), the static on a
 /// path that does not move; a contact gets the rigid impulse with the static's infinite mass.
-/// An engagement's a is the element, b the static's key (StaticBodies::KeyOf).
+/// An engagement's a is the element, b the static's key (StaticBodies::KeyOf). A sphere with
+/// drag meets statics on its true motion (DragContacts::StaticContact).
 class StaticContacts {
  public:
   StaticContacts(WorldCore& core, SparsePhase& sparse, DetailedPhase& detailed,
                  PathChanges& changes)
-      : core_(core), sparse_(sparse), detailed_(detailed), changes_(changes) {}
+      : core_(core), sparse_(sparse), detailed_(detailed), changes_(changes), drag_(core) {}
 
   void PredictEngagement(std::uint32_t k);
   /// Engagement k's contact event (DetailedPhase::Handle takes checkpoints and ends).
@@ -46,11 +48,15 @@ class StaticContacts {
   double ExitTime(std::uint32_t i, std::uint32_t s) const;
   /// The collision of i and s touching as `touch` says: false when no point approaches.
   bool Collide(std::uint32_t i, std::uint32_t s, const Touch& touch);
+  /// Engagement k of a body with drag: its contact on the true motion (DragContacts) from
+  /// `begin`, up to the exit or the body's drag check.
+  void PredictDragEngagement(std::uint32_t k, double begin);
 
   WorldCore& core_;
   SparsePhase& sparse_;
   DetailedPhase& detailed_;
   PathChanges& changes_;
+  DragContacts drag_;
 };
 
 }  // namespace sparsedyn
