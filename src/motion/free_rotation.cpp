@@ -92,10 +92,12 @@ double JacobiAmplitude(double u, double k, double kc) {
   for (int j = steps; j >= 1; --j) {
     const auto i = static_cast<std::size_t>(j);
     const double x = c[i] / a[i];
-    const double half = 0.25 * std::numbers::pi - 0.5 * phi;
-    const double one_minus_sin = 2.0 * std::sin(half) * std::sin(half);
     const double y = x * std::sin(phi);
-    const double one_minus_y = b_before[i] / a[i] + x * one_minus_sin;
+    double one_minus_y = 1.0 - y;
+    if (y > 0.5) {
+      const double half = 0.25 * std::numbers::pi - 0.5 * phi;
+      one_minus_y = b_before[i] / a[i] + x * (2.0 * std::sin(half) * std::sin(half));
+    }
     phi = 0.5 * (phi + std::atan2(y, std::sqrt(one_minus_y * (1.0 + y))));
   }
   return phi;
@@ -253,7 +255,7 @@ void FreeRotation::InitElliptic(const Vec3& w_B, int a, int b, int c) {
     kind_ = Kind::kConstant;
     return;
   }
-  integral_u0_ = JacobiAt(u0_).integral;
+  integral_u0_ = JacobiAt(u0_, true).integral;
 
   // The angle about L (Landau & Lifshitz §37, with the Euler angles' axis along e_a, which L
   // never reaches: |L_a| <= |L| sqrt(I_a (Δ I_c - L^2) / ((I_c - I_a) L^2)) < |L|):
@@ -275,12 +277,13 @@ void FreeRotation::InitElliptic(const Vec3& w_B, int a, int b, int c) {
   max_omega_ = std::min({sharp, by_energy, by_momentum}) * (1.0 + 16.0 * kEps);
 }
 
-FreeRotation::Jacobi FreeRotation::JacobiReduced(double r) const {
+FreeRotation::Jacobi FreeRotation::JacobiReduced(double r, bool integral) const {
   // |r| <= K/2: from the amplitude, where cn >= sqrt(k' / (1 + k')) keeps its digits.
   if (std::abs(r) <= 0.5 * quarter_) {
     const double phi = JacobiAmplitude(r, std::sqrt(m_), kc_);
     const double sn = std::sin(phi), cn = std::cos(phi);
     const double dn = std::sqrt(mc_ + m_ * cn * cn);
+    if (!integral) return {sn, cn, dn, 0.0};
     return {sn, cn, dn, ThirdKindPart(sn, cn, dn, 1.0 - n_ * sn * sn)};
   }
 
@@ -293,13 +296,14 @@ FreeRotation::Jacobi FreeRotation::JacobiReduced(double r) const {
   const double phi = JacobiAmplitude(vr, std::sqrt(m_), kc_);
   const double s = std::sin(phi), c = std::cos(phi);
   const double d = std::sqrt(mc_ + m_ * c * c);
+  if (!integral) return {side * c / d, -side * kc_ * s / d, kc_ / d, 0.0};
   const double weight = mc_ / (1.0 - n_);
   const double part = ThirdKindPart(s, c, d, c * c + weight * s * s);
   return {side * c / d, -side * kc_ * s / d, kc_ / d,
           side * integral_quarter_ + (vr - weight * part) / (1.0 - n_)};
 }
 
-FreeRotation::Jacobi FreeRotation::JacobiAt(double u) const {
+FreeRotation::Jacobi FreeRotation::JacobiAt(double u, bool integral) const {
   if (kind_ == Kind::kSeparatrix) {
     // k = 1: sn = tanh u, cn = dn = sech u, and ∫ tanh^2 / (1 - n tanh^2) du =
     // (u - atan(ν tanh u) / ν) / (1 - n) with ν = sqrt(-n) (partial fractions in tanh u).
@@ -314,7 +318,7 @@ FreeRotation::Jacobi FreeRotation::JacobiAt(double u) const {
   // Quasi-periodicity: u = 2 K m + r with |r| <= K, am(u) = am(r) + m π, sn and cn change
   // sign with m, and ∫(u) = ∫(r) + 2 m ∫(K) (as Π(n, φ + mπ) = Π(n, φ) + 2 m Π(n)).
   const double periods = std::nearbyint(u / (2.0 * quarter_));
-  Jacobi j = JacobiReduced(u - 2.0 * quarter_ * periods);
+  Jacobi j = JacobiReduced(u - 2.0 * quarter_ * periods, integral);
   if (std::fmod(periods, 2.0) != 0.0) {
     j.sn = -j.sn;
     j.cn = -j.cn;
@@ -350,7 +354,7 @@ Vec3 FreeRotation::OmegaBodyAt(double t) const {
     case Kind::kSeparatrix:
       break;
   }
-  return EllipticOmegaBody(JacobiAt(u0_ + lambda_ * dt));
+  return EllipticOmegaBody(JacobiAt(u0_ + lambda_ * dt, false));
 }
 
 Vec3 FreeRotation::OmegaWorldAt(double t) const {
@@ -363,14 +367,8 @@ Vec3 FreeRotation::OmegaWorldAt(double t) const {
     case Kind::kSeparatrix:
       break;
   }
-  const double dt = t - t0_;
-  const Jacobi j = JacobiAt(u0_ + lambda_ * dt);
-  const Vec3 w_B = EllipticOmegaBody(j);
-  const double psi = psi_rate_ * dt + psi_scale_ * (j.integral - integral_u0_);
-  const Eigen::Quaterniond about_z(std::cos(0.5 * psi), 0.0, 0.0, std::sin(0.5 * psi));
-  const Eigen::Quaterniond q =
-      frame_ * about_z * FrameFromMomentum(moments_.cwiseProduct(w_B), a_).conjugate();
-  return q * w_B;
+  const EllipticState state = EllipticAt(t - t0_);
+  return state.q * state.w_B;
 }
 
 Eigen::Quaterniond FreeRotation::OrientationAt(double t) const {
@@ -387,13 +385,18 @@ Eigen::Quaterniond FreeRotation::OrientationAt(double t) const {
     case Kind::kSeparatrix:
       break;
   }
+  return EllipticAt(dt).q;
+}
+
+FreeRotation::EllipticState FreeRotation::EllipticAt(double dt) const {
   // q(t) = (q0 P(t0)^-1) R_z(ψ) P(t): P takes the body to the momentum frame (e_z along L).
-  const Jacobi j = JacobiAt(u0_ + lambda_ * dt);
+  const Jacobi j = JacobiAt(u0_ + lambda_ * dt, true);
   const Vec3 w_B = EllipticOmegaBody(j);
   const double psi = psi_rate_ * dt + psi_scale_ * (j.integral - integral_u0_);
   const Eigen::Quaterniond about_z(std::cos(0.5 * psi), 0.0, 0.0, std::sin(0.5 * psi));
-  return (frame_ * about_z * FrameFromMomentum(moments_.cwiseProduct(w_B), a_).conjugate())
-      .normalized();
+  const Eigen::Quaterniond q =
+      frame_ * about_z * FrameFromMomentum(moments_.cwiseProduct(w_B), a_).conjugate();
+  return {w_B, q.normalized()};
 }
 
 Vec3 FreeRotation::Amplitudes() const {

@@ -107,9 +107,15 @@ class FreeRotation {
   };
   void InitAxisymmetric(const Vec3& w_B, int axis, double pair_moment);
   void InitElliptic(const Vec3& w_B, int a, int b, int c);
-  Jacobi JacobiAt(double u) const;
-  Jacobi JacobiReduced(double r) const;
+  // sn, cn, dn at u, and the integral when `integral` (ω alone does not need it).
+  Jacobi JacobiAt(double u, bool integral) const;
+  Jacobi JacobiReduced(double r, bool integral) const;
   Vec3 EllipticOmegaBody(const Jacobi& j) const;
+  struct EllipticState {
+    Vec3 w_B;
+    Eigen::Quaterniond q;
+  };
+  EllipticState EllipticAt(double dt) const;
 
   double t0_;
   Vec3 moments_;
