@@ -82,7 +82,8 @@ double JacobiAmplitude(double u, double k, double kc) {
     b_before[steps] = bn;
     bn = std::sqrt(an * bn);
     an = next_a;
-    if (next_c <= 0x1p-54 * next_a) break;
+    // Stopping at k_N = c_N / a_N <= 2^-27 leaves am(u_N | k_N) - u_N = O(k_N^2 u_N) <= ulps.
+    if (next_c <= 0x1p-27 * next_a) break;
   }
 
   // φ_N = 2^N a_N u, then φ_{j-1} = (φ_j + asin((c_j / a_j) sin φ_j)) / 2 (DLMF 22.20.5). The
@@ -93,6 +94,11 @@ double JacobiAmplitude(double u, double k, double kc) {
     const auto i = static_cast<std::size_t>(j);
     const double x = c[i] / a[i];
     const double y = x * std::sin(phi);
+    if (std::abs(y) < 1e-3) {  // asin by its series, to round-off (the last terms ~ y^7)
+      const double y2 = y * y;
+      phi = 0.5 * (phi + y * (1.0 + y2 * (1.0 / 6.0 + y2 * (3.0 / 40.0))));
+      continue;
+    }
     double one_minus_y = 1.0 - y;
     if (y > 0.5) {
       const double half = 0.25 * std::numbers::pi - 0.5 * phi;
