@@ -494,17 +494,22 @@ TEST(FreeRotation, NearSeparatrixMatchesTheExpansionInTheComplement) {
 }
 
 TEST(FreeRotation, NearlyEqualMomentsAreContinuousAcrossTheThreshold) {
+  // Three ways two moments come together: the two smallest, the two largest (the body turns
+  // about the smallest, k -> 0), and the two largest with the body about the largest, where
+  // the rate λ vanishes like sqrt(ΔI / I) (ω_x tiny so that |L|^2 > 2 E I_mid).
   const double tau = FreeRotation::kNearlyEqualMoments;
   const Quat q0(Eigen::AngleAxisd(0.4, Vec3(0.3, 1, -0.2).normalized()));
-  const Vec3 w_B(0.6, -0.5, 0.7);
-  double worst_jump = 0.0;
-  for (const int pair : {0, 1}) {  // the two smallest or the two largest nearly equal
+  double worst_jump = 0.0, worst_rk = 0.0;
+  for (const int pair : {0, 1, 2}) {
+    const Vec3 w_B = pair == 2 ? Vec3(1e-6, -0.5, 0.7) : Vec3(0.6, -0.5, 0.7);
     auto moments = [&](double delta) {
       return pair == 0 ? Vec3(1.0, 1.0 + delta * 2.0, 2.0) : Vec3(1.0, 2.0 - delta * 2.0, 2.0);
     };
+    const Case above_case{moments(tau * (1 + 1e-3)), q0, w_B};
     const FreeRotation below(0.0, moments(tau * (1 - 1e-3)), q0, q0 * w_B);
-    const FreeRotation above(0.0, moments(tau * (1 + 1e-3)), q0, q0 * w_B);
+    const FreeRotation above = above_case.Make();
     const FreeRotation tiny(0.0, moments(1e-12), q0, q0 * w_B);
+    SCOPED_TRACE(testing::Message() << "pair " << pair << " λ " << above.Rate());
     EXPECT_EQ(below.kind(), FreeRotation::Kind::kAxisymmetric);
     EXPECT_EQ(tiny.kind(), FreeRotation::Kind::kAxisymmetric);
     EXPECT_EQ(above.kind(), FreeRotation::Kind::kElliptic);
@@ -513,12 +518,19 @@ TEST(FreeRotation, NearlyEqualMomentsAreContinuousAcrossTheThreshold) {
                                    (below.OmegaWorldAt(t) - above.OmegaWorldAt(t)).norm());
       worst_jump = std::max(worst_jump, jump);
       ASSERT_TRUE(tiny.OrientationAt(t).coeffs().allFinite());
+      ASSERT_TRUE(tiny.OmegaWorldAt(t).allFinite());
     }
+    // The elliptic form just above the threshold against RK4.
+    const auto [angle, omega] = CompareWithIntegrator(above_case, 10.0, 1e-3, above);
+    worst_rk = std::max({worst_rk, angle, omega});
   }
-  std::printf("jump across kNearlyEqualMoments = %.3g over 10 s at |ω| ~ 1: %.3g\n", tau,
-              worst_jump);
+  std::printf(
+      "jump across kNearlyEqualMoments = %.3g over 10 s at |ω| ~ 1: %.3g; the elliptic "
+      "form just above it vs RK4: %.3g\n",
+      tau, worst_jump, worst_rk);
   // The fall-back's own error is ~ΔI/I |ω|^2 t = 2e-10 · 10 here.
   EXPECT_LT(worst_jump, 1e-8);
+  EXPECT_LT(worst_rk, kAgainstIntegrator);
 }
 
 TEST(FreeRotation, RebasingAtAnyTimeGivesTheSameMotion) {
