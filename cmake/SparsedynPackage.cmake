@@ -19,7 +19,9 @@ set(CPACK_SOURCE_GENERATOR "")
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 # The tool's run-time libraries by dpkg-shlibdeps; the headers and the CMake files need Eigen
-# and Qhull's development packages (find_dependency in sparsedynConfig.cmake).
+# and Qhull's development packages (find_dependency in sparsedynConfig.cmake). Boost.Math
+# (libboost-dev) is header-only and used only inside the library's sources, so the package
+# needs it only to build, not to use (scripts/deps.sh installs it).
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libeigen3-dev (>= 3.4), libqhull-dev")
 include(CPack)

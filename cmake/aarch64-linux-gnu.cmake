@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # Cross build for 64-bit ARM with Debian's cross compiler (g++-aarch64-linux-gnu) against the
-# arm64 multiarch libraries (libqhull-dev:arm64, libgtest-dev:arm64; scripts/deps.sh --aarch64
-# installs them). Tests run under qemu-user: CTest and gtest_discover_tests go through the
+# arm64 multiarch libraries (libqhull-dev:arm64, libboost-dev:arm64, libgtest-dev:arm64;
+# scripts/deps.sh --aarch64 installs them). Tests run under qemu-user: CTest and gtest_discover_tests go through the
 # emulator. Used by scripts/aarch64.sh and .ci/run (docs/reliability.md).
 set(CMAKE_SYSTEM_NAME Linux)
 set(CMAKE_SYSTEM_PROCESSOR aarch64)

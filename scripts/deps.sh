@@ -8,10 +8,10 @@
 #   scripts/deps.sh            build + test dependencies
 #   scripts/deps.sh --peers    also the peer engines for bench/peers (Bullet, FCL, libccd)
 #   scripts/deps.sh --aarch64  also the cross build (scripts/aarch64.sh): the cross compiler,
-#                              qemu-user and the arm64 multiarch Qhull and GoogleTest
+#                              qemu-user and the arm64 multiarch Qhull, Boost and GoogleTest
 set -euo pipefail
 
-packages=(build-essential cmake pkg-config libeigen3-dev libqhull-dev libcli11-dev
+packages=(build-essential cmake pkg-config libeigen3-dev libqhull-dev libboost-dev libcli11-dev
           nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libassimp-dev
           libfcl-dev libccd-dev libbullet-dev libcgal-dev libgmp-dev libmpfr-dev
           libcpp-httplib-dev
@@ -25,7 +25,8 @@ fi
 aarch64=0
 if [[ "${1:-}" == "--aarch64" ]]; then
   aarch64=1
-  packages+=(g++-aarch64-linux-gnu qemu-user libqhull-dev:arm64 libgtest-dev:arm64)
+  packages+=(g++-aarch64-linux-gnu qemu-user libqhull-dev:arm64 libboost-dev:arm64
+            libgtest-dev:arm64)
 fi
 
 missing=()
