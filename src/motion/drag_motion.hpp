@@ -81,6 +81,8 @@ class DragMotion {
   /// (the speed falls whenever it is above the terminal speed of |g|); infinite without drag
   /// when g != 0.
   double SpeedBound() const { return speed_bound_; }
+  /// An a-priori bound on |acceleration| for all t >= t0.
+  double AccelerationBound() const { return accel_bound_; }
 
  private:
   struct Horizon;

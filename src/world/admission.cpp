@@ -85,28 +85,20 @@ Result<Admission::Accepted> Admission::Check(const BodyDef& def, std::uint32_t s
 
 std::optional<Error> Admission::CheckDragCombination(const BodyDef& def,
                                                      const std::string& body) const {
-  // Drag's contacts are predicted on true motions for spheres against spheres, walls, static
-  // bodies and god spheres: drag on or beside a moving polyhedron is not supported yet
-  // (docs/dynamics.md).
-  const BodyStore& bodies = core_.bodies;
+  // Drag's contacts are predicted on true motions for every pair kind (docs/dynamics.md,
+  // "Drag in the World"); a god object's track drives it, and an envelope of its own would
+  // stack on the drag segment's.
   if (def.god && def.drag && !def.drag->IsZero()) {
     return Error{body + "drag on a god object is not supported (its track drives it)"};
   }
   if (!DragOf(def, core_.settings.drag).IsZero()) {
     const std::string at = body + "drag ";
-    if (def.shape != nullptr) return Error{at + "on a polyhedron is not supported yet"};
     if (!def.envelope.IsZero()) return Error{at + "and an envelope together are not supported"};
-    if (bodies.rigid.AnyPolyhedron()) {
-      return Error{at + "in a World with moving polyhedra is not supported yet"};
-    }
     if (core_.settings.contact_tolerance < kMinDragContactTolerance) {
       // The message's 1e-12 is kMinDragContactTolerance.
       return Error{at + "needs settings.contact_tolerance >= 1e-12, got " +
                    FormatExact(core_.settings.contact_tolerance)};
     }
-  }
-  if (def.shape != nullptr && !def.is_static && bodies.paths.drags().Any()) {
-    return Error{body + "a moving polyhedron in a World with drag is not supported yet"};
   }
   return std::nullopt;
 }

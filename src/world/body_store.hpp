@@ -98,6 +98,20 @@ struct BodyStore {
   RigidPath RigidPathOf(std::uint32_t i) const {
     return RigidPath{paths.PathOf(i), rigid.Orientation0(i), rigid.Omega(i)};
   }
+  /// Body i's rigid path as the contact handlers see it now: its own, or for a body with drag
+  /// the path through its true state now (exact at now, its Taylor acceleration after).
+  RigidPath RigidPathNow(std::uint32_t i) const {
+    RigidPath path = RigidPathOf(i);
+    if (!HasDrag(i)) return path;
+    const double now = paths.Now();
+    const DragState state = paths.drags().StateAt(i, now);
+    return RigidPath{Path{state.position, state.velocity, path.centre.a, now},
+                     path.OrientationAt(now), path.omega};
+  }
+  /// A bound on |acceleration| of body i's true motion from now until its path changes.
+  double AccelerationBound(std::uint32_t i) const {
+    return HasDrag(i) ? paths.drags().AccelerationBound(i) : paths.PathOf(i).a.norm();
+  }
   bool IsPolyhedron(std::uint32_t i) const { return rigid.IsPolyhedron(i); }
   bool IsGod(std::uint32_t i) const { return gods.IsGod(i); }
   /// Whether body i has an envelope of its own (not a drag segment's).

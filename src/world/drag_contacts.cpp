@@ -7,6 +7,7 @@
 #include "math/event_time.hpp"
 #include "narrow/point_features.hpp"
 #include "narrow/sphere_contact.hpp"
+#include "narrow/time_of_contact.hpp"
 #include "sparse/meeting.hpp"
 #include "world/contact_band.hpp"
 
@@ -24,6 +25,12 @@ constexpr double kWallErrorShare = 0.25;
 // state, never finds it early (the steps converge to half the band: see the shares above).
 constexpr double kAcceptShare = 0.5;
 constexpr double kClosingMargin = 1e-12;
+// Polyhedra: a step's prediction is asked for the envelopes plus this share of the band (over
+// kAdvancementTarget, which a rotating pair's advancement stops short by), so the true bodies
+// stay at least that far apart before the step's end, and a step from a gap within the band
+// ends at most 2/3 of the band apart: accepted below 3/4 of it.
+constexpr double kStepBandShare = 0.125;
+constexpr double kPolyhedronAcceptShare = 0.75;
 
 // The next time after t that a step reaches: EventTime(t, dt), but at least one ulp on (a gap
 // wider than the band takes time to close, so this is not late).
@@ -190,6 +197,150 @@ double DragContacts::StaticContact(std::uint32_t i, std::uint32_t s, double band
     }
   }
   return t;
+}
+
+DragContacts::LocalRigid DragContacts::LocalRigidAt(const Side& side, double t, double max_error,
+                                                   double max_horizon) const {
+  if (side.body == kNoIndex) return LocalRigid{side.fixed, kInfinity, 0.0};
+  const BodyStore& bodies = core_.bodies;
+  RigidPath path = bodies.RigidPathOf(side.body);
+  if (!bodies.HasDrag(side.body)) {
+    path.centre.p0 += side.shift;
+    return LocalRigid{path, kInfinity, 0.0};
+  }
+  const TaylorSegment segment =
+      bodies.paths.drags().LocalSegment(side.body, t, max_error, max_horizon);
+  RigidPath local{segment.path, path.OrientationAt(segment.path.t0).normalized(), path.omega};
+  local.centre.p0 += side.shift;
+  return LocalRigid{local, segment.horizon, max_error};
+}
+
+Pose DragContacts::TruePoseOf(const Side& side, double t) const {
+  if (side.body == kNoIndex) return side.fixed.PoseAt(t);
+  const BodyStore& bodies = core_.bodies;
+  return Pose{bodies.RigidPathOf(side.body).OrientationAt(t),
+              bodies.paths.TruePositionAt(side.body, t) + side.shift};
+}
+
+double DragContacts::SpinRadiusOf(const Side& side) const {
+  return side.body == kNoIndex ? 0.0 : core_.bodies.rigid.SpinRadius(side.body);
+}
+
+const TrackedPolyhedron& DragContacts::ShapeOf(const Side& side) const {
+  return side.body == kNoIndex ? *side.shape : *core_.bodies.rigid.ShapeOf(side.body).tracked;
+}
+
+template <typename GapAt, typename Step>
+double DragContacts::Advance(double band, double begin, double end, GapAt&& gap_at,
+                             Step&& step) {
+  Statistics& stats = core_.observers.stats();
+  double t = begin;
+  for (int k = 0; k < kIterationsPerPrediction; ++k) {
+    if (!(t < end)) return kInfinity;
+    const double gap = gap_at(t);
+    if (gap <= kPolyhedronAcceptShare * band) return t;
+    ++stats.drag_steps;
+    // Each envelope below an eighth of the gap: the step ends where the true gap is at most
+    // about half of it (or 2/3 of the band).
+    t = step(t, kPairErrorShare * std::max(gap, band));
+  }
+  return t;  // unfinished: looked at again from here
+}
+
+namespace {
+
+// A step's prediction for local paths with envelopes e_a and e_b: asked for both plus an
+// eighth of the band, over the rotating pair's advancement target.
+ContactPredictionOptions StepOptions(double e_a, double e_b, double band, double spin_a,
+                                     double spin_b) {
+  ContactPredictionOptions options;
+  options.tolerance = (e_a + e_b + kStepBandShare * band) / kAdvancementTarget;
+  options.max_iterations = kIterationsPerPrediction;
+  options.spin_radius_a = spin_a;
+  options.spin_radius_b = spin_b;
+  return options;
+}
+
+// Where a step ends: at the prediction's time (at least an ulp on), or past the horizon h.
+double StepEnd(double t, ContactPrediction::Kind kind, double time, double h) {
+  if (kind == ContactPrediction::Kind::kNone) return NextStart(t, kInfinity, h);
+  return time > t ? time : std::nextafter(t, kInfinity);
+}
+
+}  // namespace
+
+double DragContacts::PolyhedraContact(const Side& a, const Side& b, double band, double begin,
+                                      double end, std::optional<FeaturePair>& features) {
+  const TrackedPolyhedron& shape_a = ShapeOf(a);
+  const TrackedPolyhedron& shape_b = ShapeOf(b);
+  Statistics& stats = core_.observers.stats();
+  const auto gap_at = [&](double t) {
+    const ClosestFeatures closest =
+        FindClosestFeatures(shape_a, TruePoseOf(a, t), shape_b, TruePoseOf(b, t), features);
+    features = closest.features;
+    return closest.distance;
+  };
+  const auto step = [&](double t, double max_error) {
+    const LocalRigid la = LocalRigidAt(a, t, max_error, end - t);
+    const LocalRigid lb = LocalRigidAt(b, t, max_error, end - t);
+    const double h = std::min({la.horizon, lb.horizon, end - t});
+    const ContactPrediction p = PredictContact(
+        shape_a, la.path, shape_b, lb.path, t, t + h, features,
+        StepOptions(la.error, lb.error, band, SpinRadiusOf(a), SpinRadiusOf(b)));
+    stats.detail_iterations += static_cast<std::uint64_t>(p.iterations);
+    features = p.features.features;
+    return StepEnd(t, p.kind, p.time, h);
+  };
+  return Advance(band, begin, end, gap_at, step);
+}
+
+double DragContacts::PolyhedronSphereContact(const Side& p, const Side& s, double radius,
+                                             double band, double begin, double end,
+                                             std::optional<FeatureId>& feature) {
+  const TrackedPolyhedron& shape = ShapeOf(p);
+  Statistics& stats = core_.observers.stats();
+  const auto gap_at = [&](double t) {
+    const PointClosest closest =
+        FindClosestFeatureToPoint(shape, TruePoseOf(p, t), TruePoseOf(s, t).translation, feature);
+    feature = closest.feature;
+    return closest.distance - radius;
+  };
+  const auto step = [&](double t, double max_error) {
+    const LocalRigid lp = LocalRigidAt(p, t, max_error, end - t);
+    const LocalRigid ls = LocalRigidAt(s, t, max_error, end - t);
+    const double h = std::min({lp.horizon, ls.horizon, end - t});
+    const SphereContactPrediction q =
+        PredictSphereContact(shape, lp.path, ls.path.centre, radius, t, t + h, feature,
+                             StepOptions(lp.error, ls.error, band, SpinRadiusOf(p), -1.0));
+    stats.detail_iterations += static_cast<std::uint64_t>(q.iterations);
+    if (q.kind != ContactPrediction::Kind::kNone) feature = q.closest.feature;
+    return StepEnd(t, q.kind, q.time, h);
+  };
+  return Advance(band, begin, end, gap_at, step);
+}
+
+double DragContacts::PolyhedronWallContact(std::uint32_t i, const WallPlane& plane, double band,
+                                           double begin, double end) {
+  const Side side{i};
+  const TrackedPolyhedron& shape = ShapeOf(side);
+  const ConvexPolyhedron& polyhedron = *core_.bodies.rigid.ShapeOf(i).polyhedron;
+  Statistics& stats = core_.observers.stats();
+  const auto gap_at = [&](double t) {
+    const Pose pose = TruePoseOf(side, t);
+    const int nearest = shape.SupportVertex(-(pose.rotation.conjugate() * plane.normal));
+    return plane.normal.dot(pose.ToWorld(polyhedron.vertex(nearest))) - plane.offset;
+  };
+  const auto step = [&](double t, double max_error) {
+    const LocalRigid local = LocalRigidAt(side, t, max_error, end - t);
+    const double h = std::min(local.horizon, end - t);
+    const WallContactPrediction p = PredictWallContact(
+        shape, local.path, plane.normal, plane.offset, t, t + h,
+        StepOptions(local.error, 0.0, band, 0.0, 0.0).tolerance, kIterationsPerPrediction,
+        SpinRadiusOf(side));
+    stats.detail_iterations += static_cast<std::uint64_t>(p.iterations);
+    return StepEnd(t, p.kind, p.time, h);
+  };
+  return Advance(band, begin, end, gap_at, step);
 }
 
 double DragContacts::FirstWallContact(std::uint32_t i, double end, std::uint8_t& wall) {

@@ -4,8 +4,10 @@
 #include <cstdint>
 #include <optional>
 
+#include "motion/rigid_path.hpp"
 #include "sparse/mover.hpp"
 #include "sparsedyn/geometry/convex_polyhedron.hpp"
+#include "sparsedyn/narrow/closest_features.hpp"
 #include "world/box_walls.hpp"
 #include "world/world_core.hpp"
 
@@ -45,7 +47,48 @@ class DragContacts {
   double StaticContact(std::uint32_t i, std::uint32_t s, double band, double begin, double end,
                        std::optional<FeatureId>& feature);
 
+  /// One side of a polyhedron's contact on true motions: a moving body (its image at `shift`),
+  /// or a static one (body kNoIndex) fixed on `fixed`, with its `shape` if a polyhedron.
+  struct Side {
+    std::uint32_t body = kNoIndex;
+    Vec3 shift = Vec3::Zero();
+    RigidPath fixed;
+    const TrackedPolyhedron* shape = nullptr;
+  };
+  /// Polyhedra with drag (docs/dynamics.md, "Drag in the World"): the same advancement, each
+  /// step the detailed phase's own prediction (narrow/time_of_contact.hpp) on the local Taylor
+  /// paths with its tolerance grown by both envelopes. The first time in [begin, end) at which
+  /// polyhedra a and b (one of them at least with drag) are within 3/4 of `band` on their true
+  /// motions, never later than the first time they are within band/8; a time before it when
+  /// kIterationsPerPrediction steps did not finish; kInfinity when none before end. `features`:
+  /// the pair's warm start in, the last walk's out. Whether a point approaches is the handler's
+  /// question.
+  double PolyhedraContact(const Side& a, const Side& b, double band, double begin, double end,
+                          std::optional<FeaturePair>& features);
+  /// The same for polyhedron side p and the sphere of `radius` on side s (`feature`: the
+  /// polyhedron's closest to the centre).
+  double PolyhedronSphereContact(const Side& p, const Side& s, double radius, double band,
+                                 double begin, double end, std::optional<FeatureId>& feature);
+  /// The same for polyhedron i (with drag) and the wall `plane`.
+  double PolyhedronWallContact(std::uint32_t i, const WallPlane& plane, double band,
+                               double begin, double end);
+
  private:
+  // A side's rigid path about t within `error` of its true motion over `horizon`.
+  struct LocalRigid {
+    RigidPath path;
+    double horizon;
+    double error;
+  };
+  LocalRigid LocalRigidAt(const Side& side, double t, double max_error, double max_horizon) const;
+  // A side's pose at t on its true motion.
+  Pose TruePoseOf(const Side& side, double t) const;
+  double SpinRadiusOf(const Side& side) const;
+  const TrackedPolyhedron& ShapeOf(const Side& side) const;
+  // The advancement shared by the polyhedra: `gap_at(t)`, the true gap; `step(t, max_error)`,
+  // the next time, from t, at which the local paths may be within the band.
+  template <typename GapAt, typename Step>
+  double Advance(double band, double begin, double end, GapAt&& gap_at, Step&& step);
   // Body i's sphere on its true motion about t: the local Taylor segment with envelope at most
   // max_error over its horizon, or the exact path of a body without drag.
   struct Local {

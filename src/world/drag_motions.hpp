@@ -52,6 +52,10 @@ class DragMotions {
   }
   /// The acceleration of body i's element path (its Taylor path) in the current segment.
   const Vec3& PathAcceleration(std::uint32_t i) const { return entries_[i].path_a; }
+  /// A bound on |acceleration| of body i's true motion from its segment's start on.
+  double AccelerationBound(std::uint32_t i) const {
+    return entries_[i].motion->AccelerationBound();
+  }
   /// The time of body i's next check event (infinity: none, or no drag).
   double CheckTime(std::uint32_t i) const { return any_ ? entries_[i].check_time : kInfinity; }
   /// The envelope body i's segments may grow to, m.

@@ -18,9 +18,9 @@ ClosestFeatures PolyhedronContacts::PairFeatures(std::uint32_t a, std::uint32_t 
                                                  std::optional<FeaturePair> warm) const {
   const BodyStore& bodies = core_.bodies;
   const double now = bodies.paths.Now();
-  Pose pose_b = bodies.RigidPathOf(b).PoseAt(now);
+  Pose pose_b = bodies.RigidPathNow(b).PoseAt(now);
   pose_b.translation += shift;
-  return FindClosestFeatures(*bodies.rigid.ShapeOf(a).tracked, bodies.RigidPathOf(a).PoseAt(now),
+  return FindClosestFeatures(*bodies.rigid.ShapeOf(a).tracked, bodies.RigidPathNow(a).PoseAt(now),
                              *bodies.rigid.ShapeOf(b).tracked, pose_b, warm);
 }
 
@@ -51,6 +51,18 @@ void PolyhedronContacts::PredictEngagement(std::uint32_t k) {
     // Touching now: the contact handler decides whether any point approaches.
     e.contact_next = true;
     time = now;
+  } else if (bodies.HasDrag(e.a) || bodies.HasDrag(e.b)) {
+    // On the true motions; a search left unfinished is an early contact that predicts again.
+    ++stats.detail_predictions;
+    std::optional<FeaturePair> features = e.features;
+    const double contact = drag_.PolyhedraContact(DragContacts::Side{e.a},
+                                                  DragContacts::Side{e.b, shift}, tolerance,
+                                                  now, separation, features);
+    e.features = *features;
+    if (contact < separation) {
+      e.contact_next = true;
+      time = contact;
+    }
   } else {
     ++stats.detail_predictions;
     ContactPredictionOptions options;
@@ -95,12 +107,16 @@ void PolyhedronContacts::HandleContact(std::uint32_t k) {
   // look again once the tolerance band could have been closed.
   const BodyStore& bodies = core_.bodies;
   const double now = bodies.paths.Now();
-  const RigidPath a = bodies.RigidPathOf(e.a);
-  const RigidPath b = bodies.RigidPathOf(e.b);
+  const RigidPath a = bodies.RigidPathNow(e.a);
+  const RigidPath b = bodies.RigidPathNow(e.b);
   const double speed = (b.centre.VelocityAt(now) - a.centre.VelocityAt(now)).norm() +
                        a.omega.norm() * bodies.materials.Radius(e.a) +
                        b.omega.norm() * bodies.materials.Radius(e.b);
-  const double acceleration = (b.centre.a - a.centre.a).norm();
+  // With drag, the paths' accelerations are not the true ones: their bounds.
+  const double acceleration =
+      bodies.HasDrag(e.a) || bodies.HasDrag(e.b)
+          ? bodies.AccelerationBound(e.a) + bodies.AccelerationBound(e.b)
+          : (b.centre.a - a.centre.a).norm();
   const double separation = EventTime(
       now, PredictSeparation(bodies.MoverOf(e.a, now), bodies.MoverOf(e.b, now), shift));
   const double again = BandExit(now, tolerance, speed, acceleration);
@@ -118,8 +134,8 @@ bool PolyhedronContacts::Collide(std::uint32_t a, std::uint32_t b,
   ContactGeometry contact;
   {
     const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
-    const RigidPath path_a = bodies.RigidPathOf(a);
-    RigidPath path_b = bodies.RigidPathOf(b);
+    const RigidPath path_a = bodies.RigidPathNow(a);
+    RigidPath path_b = bodies.RigidPathNow(b);
     path_b.centre.p0 += shift;
     const Pose pose_a = path_a.PoseAt(now);
     const Pose pose_b = path_b.PoseAt(now);

@@ -24,9 +24,9 @@ PointClosest SpherePolyhedronContacts::Closest(std::uint32_t p, std::uint32_t s,
                                                std::optional<FeatureId> warm) const {
   const BodyStore& bodies = core_.bodies;
   const double now = bodies.paths.Now();
-  const Vec3 centre = bodies.paths.PathOf(s).PositionAt(now) + PairShift(core_, p, s);
+  const Vec3 centre = bodies.paths.TruePositionAt(s, now) + PairShift(core_, p, s);
   return FindClosestFeatureToPoint(*bodies.rigid.ShapeOf(p).tracked,
-                                   bodies.RigidPathOf(p).PoseAt(now), centre, warm);
+                                   bodies.RigidPathNow(p).PoseAt(now), centre, warm);
 }
 
 void SpherePolyhedronContacts::PredictEngagement(std::uint32_t k) {
@@ -54,6 +54,18 @@ void SpherePolyhedronContacts::PredictEngagement(std::uint32_t k) {
     // Touching now: the contact handler decides whether any point approaches.
     e.contact_next = true;
     time = now;
+  } else if (bodies.HasDrag(pair.polyhedron) || bodies.HasDrag(pair.sphere)) {
+    // On the true motions; a search left unfinished is an early contact that predicts again.
+    ++stats.detail_predictions;
+    std::optional<FeatureId> feature = e.features.a;
+    const double contact = drag_.PolyhedronSphereContact(
+        DragContacts::Side{pair.polyhedron}, DragContacts::Side{pair.sphere, shift}, radius,
+        tolerance, now, separation, feature);
+    e.features.a = *feature;
+    if (contact < separation) {
+      e.contact_next = true;
+      time = contact;
+    }
   } else {
     ++stats.detail_predictions;
     ContactPredictionOptions options;
@@ -101,10 +113,16 @@ void SpherePolyhedronContacts::HandleContact(std::uint32_t k) {
   const double now = bodies.paths.Now();
   const Path& p = bodies.paths.PathOf(pair.polyhedron);
   const Path& s = bodies.paths.PathOf(pair.sphere);
-  const double speed = (s.VelocityAt(now) - p.VelocityAt(now)).norm() +
+  const double speed = (bodies.paths.TrueVelocityAt(pair.sphere, now) -
+                        bodies.paths.TrueVelocityAt(pair.polyhedron, now))
+                           .norm() +
                        bodies.rigid.Omega(pair.polyhedron).norm() *
                            bodies.materials.Radius(pair.polyhedron);
-  const double acceleration = (s.a - p.a).norm();
+  // With drag, the paths' accelerations are not the true ones: their bounds.
+  const double acceleration =
+      bodies.HasDrag(pair.polyhedron) || bodies.HasDrag(pair.sphere)
+          ? bodies.AccelerationBound(pair.polyhedron) + bodies.AccelerationBound(pair.sphere)
+          : (s.a - p.a).norm();
   const Vec3 shift = PairShift(core_, pair.polyhedron, pair.sphere);
   const double separation =
       EventTime(now, PredictSeparation(bodies.MoverOf(pair.polyhedron, now),
@@ -124,7 +142,7 @@ bool SpherePolyhedronContacts::Collide(const Pair& pair, const PointClosest& clo
   RigidImpulseResult result;
   {
     const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
-    const RigidPath path_p = bodies.RigidPathOf(p);
+    const RigidPath path_p = bodies.RigidPathNow(p);
     const Pose pose_p = path_p.PoseAt(now);
     // The sphere's image nearest to the polyhedron: the contact's frame.
     const Vec3 centre = closest.point + closest.distance * closest.normal;

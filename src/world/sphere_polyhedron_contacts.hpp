@@ -5,6 +5,7 @@
 
 #include "narrow/point_features.hpp"
 #include "world/detailed_phase.hpp"
+#include "world/drag_contacts.hpp"
 #include "world/path_changes.hpp"
 #include "world/sparse_phase.hpp"
 #include "world/world_core.hpp"
@@ -20,7 +21,7 @@ class SpherePolyhedronContacts {
  public:
   SpherePolyhedronContacts(WorldCore& core, SparsePhase& sparse, DetailedPhase& detailed,
                            PathChanges& changes)
-      : core_(core), sparse_(sparse), detailed_(detailed), changes_(changes) {}
+      : core_(core), sparse_(sparse), detailed_(detailed), changes_(changes), drag_(core) {}
 
   void PredictEngagement(std::uint32_t k);
   /// Engagement k's contact event (DetailedPhase::Handle takes checkpoints and ends).
@@ -43,6 +44,7 @@ class SpherePolyhedronContacts {
   SparsePhase& sparse_;
   DetailedPhase& detailed_;
   PathChanges& changes_;
+  DragContacts drag_;  // pairs with drag, on their true motions
 };
 
 }  // namespace sparsedyn

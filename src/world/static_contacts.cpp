@@ -43,9 +43,8 @@ StaticContacts::Touch StaticContacts::TouchNow(std::uint32_t i, std::uint32_t s,
   const double now = core_.Now();
   const bool moving_polyhedron = bodies.IsPolyhedron(i);
   const bool static_polyhedron = st.shape != kNoIndex;
-  Pose pose_i = bodies.RigidPathOf(i).PoseAt(now);
   // A body with drag is where its true motion is (its element's path is within an envelope).
-  if (bodies.HasDrag(i)) pose_i.translation = bodies.paths.PositionNow(i);
+  const Pose pose_i = bodies.RigidPathNow(i).PoseAt(now);
   Touch touch;
   if (moving_polyhedron && static_polyhedron) {
     const BodyShape& shape_i = bodies.rigid.ShapeOf(i);
@@ -178,17 +177,22 @@ void StaticContacts::HandleContact(std::uint32_t k) {
   if (Collide(i, s, touch)) return;
   const BodyStore& bodies = core_.bodies;
   const double now = core_.Now();
-  if (bodies.HasDrag(i)) {
-    // Touching, but not approaching: the true motion from just after now.
+  if (bodies.HasDrag(i) && !bodies.IsPolyhedron(i)) {
+    // Touching, but not approaching: the true motion from just after now (its steps know
+    // whether a sphere closes).
     PredictDragEngagement(k, std::nextafter(now, kInfinity));
     return;
   }
   // Touching, but no point approaches: look again once the band could have been closed.
-  const Path& path = bodies.paths.PathOf(i);
-  const double speed =
-      path.VelocityAt(now).norm() + bodies.rigid.SpinRadius(i) * bodies.rigid.Omega(i).norm();
+  const double speed = bodies.paths.TrueVelocityAt(i, now).norm() +
+                       bodies.rigid.SpinRadius(i) * bodies.rigid.Omega(i).norm();
   const double exit = ExitTime(i, s);
-  const double again = BandExit(now, tolerance, speed, path.a.norm());
+  const double again = BandExit(now, tolerance, speed, bodies.AccelerationBound(i));
+  if (bodies.HasDrag(i)) {
+    if (again < exit) PredictDragEngagement(k, again);
+    else detailed_.Schedule(k, exit);
+    return;
+  }
   e.contact_next = false;
   e.checkpoint = again < exit;
   detailed_.Schedule(k, std::min(again, exit));
@@ -204,10 +208,31 @@ void StaticContacts::PredictDragEngagement(std::uint32_t k, double begin) {
   std::optional<FeatureId> feature =
       e.has_features ? std::optional<FeatureId>(e.features.a) : std::nullopt;
   ++stats.detail_predictions;
-  const double contact = drag_.StaticContact(i, s, Tolerance(i, s), begin, end, feature);
-  if (feature) {
-    e.features.a = *feature;
+  const BodyStore& bodies = core_.bodies;
+  const StaticBodies::Static& st = bodies.statics[s];
+  double contact = kInfinity;
+  if (bodies.IsPolyhedron(i)) {
+    // The static on its fixed path; a polyhedron's pair keeps both features.
+    const DragContacts::Side moving{i};
+    DragContacts::Side fixed{kNoIndex, Vec3::Zero(), PathOfStatic(s)};
+    if (st.shape != kNoIndex) {
+      fixed.shape = bodies.rigid.shapes()[st.shape].tracked.get();
+      std::optional<FeaturePair> features =
+          e.has_features ? std::optional<FeaturePair>(e.features) : std::nullopt;
+      contact = drag_.PolyhedraContact(moving, fixed, Tolerance(i, s), begin, end, features);
+      if (features) e.features = *features;
+    } else {
+      contact = drag_.PolyhedronSphereContact(moving, fixed, st.radius, Tolerance(i, s), begin,
+                                              end, feature);
+      if (feature) e.features.a = *feature;
+    }
     e.has_features = true;
+  } else {
+    contact = drag_.StaticContact(i, s, Tolerance(i, s), begin, end, feature);
+    if (feature) {
+      e.features.a = *feature;
+      e.has_features = true;
+    }
   }
   // An unfinished search (a time before end) is an early contact event that predicts again.
   e.contact_next = contact < end;
@@ -223,8 +248,7 @@ bool StaticContacts::Collide(std::uint32_t i, std::uint32_t s, const Touch& touc
   RigidImpulseResult result;
   {
     const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
-    Pose pose_i = bodies.RigidPathOf(i).PoseAt(now);
-    if (bodies.HasDrag(i)) pose_i.translation = bodies.paths.PositionNow(i);
+    const Pose pose_i = bodies.RigidPathNow(i).PoseAt(now);
     RigidBodyState moving{pose_i.translation, bodies.paths.VelocityNow(i), bodies.rigid.Omega(i),
                           bodies.materials.InvMass(i),
                           bodies.InvInertiaWorld(i, pose_i.rotation)};

@@ -120,8 +120,46 @@ void WallContacts::HandleSphere(std::uint32_t i) {
   detailed_.PredictEngagementsOf(i);
 }
 
+Event WallContacts::PredictDragPolyhedron(std::uint32_t i, Event event) {
+  const BodyStore& bodies = core_.bodies;
+  const double now = bodies.paths.Now();
+  // The element (its envelope included) reaches a wall no later than the body; one that
+  // overlaps a wall already may hold a body that touches it at any time.
+  const Mover element = bodies.MoverOf(i, now);
+  const double tolerance = core_.settings.contact_tolerance * bodies.materials.Radius(i);
+  // No further than its check, which predicts again with a new segment.
+  const double end = std::min(event.time, bodies.paths.drags().CheckTime(i));
+  for (int w = 0; w < 6; ++w) {
+    const WallPlane plane = BoxWall(core_.settings.container, w);
+    double begin = now;
+    if (plane.normal.dot(element.p) - plane.offset > element.r0) {
+      const double dt = PredictWallMeeting(element, plane.normal, plane.offset);
+      if (dt == kInfinity) continue;
+      begin = std::max(now, EventTime(now, dt));
+    }
+    if (band_skip_ && *band_skip_ == std::make_pair(i, w)) {
+      // It has just touched this wall without approaching: not before the band could close.
+      const RigidPath path = bodies.RigidPathNow(i);
+      begin = std::max(begin, BandExit(now, tolerance,
+                                       path.centre.v0.norm() +
+                                           path.omega.norm() * bodies.materials.Radius(i),
+                                       bodies.AccelerationBound(i)));
+    }
+    const double limit = std::min(end, event.time);
+    if (!(begin < limit)) continue;
+    ++core_.observers.stats().detail_predictions;
+    const double t = drag_.PolyhedronWallContact(i, plane, tolerance, begin, limit);
+    // An unfinished search is an early wall event, which predicts again.
+    if (t < limit) {
+      event = Event{t, EventKind::kWallMeet, static_cast<std::uint8_t>(w), kNoIndex, 0};
+    }
+  }
+  return event;
+}
+
 Event WallContacts::PredictPolyhedron(std::uint32_t i, Event event) {
   const BodyStore& bodies = core_.bodies;
+  if (bodies.HasDrag(i)) return PredictDragPolyhedron(i, event);
   Statistics& stats = core_.observers.stats();
   const double now = bodies.paths.Now();
   const RigidPath path = bodies.RigidPathOf(i);
@@ -197,7 +235,7 @@ void WallContacts::HandlePolyhedron(std::uint32_t i) {
   const double now = bodies.paths.Now();
   const int w = sparse_.PredictionOf(i).aux;
   const WallPlane plane = BoxWall(core_.settings.container, w);
-  const RigidPath path = bodies.RigidPathOf(i);
+  const RigidPath path = bodies.RigidPathNow(i);
   const Pose pose = path.PoseAt(now);
   const ConvexPolyhedron& polyhedron = *bodies.rigid.ShapeOf(i).polyhedron;
   const double tolerance = core_.settings.contact_tolerance * bodies.materials.Radius(i);

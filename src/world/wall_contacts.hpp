@@ -7,6 +7,7 @@
 
 #include "events/event.hpp"
 #include "world/detailed_phase.hpp"
+#include "world/drag_contacts.hpp"
 #include "world/path_changes.hpp"
 #include "world/sparse_phase.hpp"
 #include "world/world_core.hpp"
@@ -22,7 +23,7 @@ class WallContacts {
  public:
   WallContacts(WorldCore& core, SparsePhase& sparse, DetailedPhase& detailed,
                PathChanges& changes)
-      : core_(core), sparse_(sparse), detailed_(detailed), changes_(changes) {}
+      : core_(core), sparse_(sparse), detailed_(detailed), changes_(changes), drag_(core) {}
 
   /// Body i's wall event (kWallMeet, the wall in its prediction's aux).
   void Handle(std::uint32_t i);
@@ -33,12 +34,15 @@ class WallContacts {
  private:
   void HandleSphere(std::uint32_t i);
   void HandlePolyhedron(std::uint32_t i);
+  /// PredictPolyhedron for a polyhedron with drag, on its true motion.
+  Event PredictDragPolyhedron(std::uint32_t i, Event event);
   bool HoldAgainstWall(std::uint32_t i, int w, const Vec3& normal, const Vec3& v, double gap);
 
   WorldCore& core_;
   SparsePhase& sparse_;
   DetailedPhase& detailed_;
   PathChanges& changes_;
+  DragContacts drag_;  // polyhedra with drag, on their true motions
   // Set while a body that touched a wall without approaching it predicts again: that wall is
   // then left alone for the time the body needs to close the tolerance band.
   std::optional<std::pair<std::uint32_t, int>> band_skip_;

@@ -13,28 +13,12 @@
 
 #include "sparsedyn/geometry/generators.hpp"
 #include "sparsedyn/world.hpp"
+#include "support/linear_drag_oracle.hpp"
 
 namespace sparsedyn {
 namespace {
 
-using Real = long double;
-
-// Linear drag with gravity from rest, height z0: z(t) = z0 + v_inf t - v_inf (1 - e^(-c1 t)) / c1
-// with v_inf = g / c1 (g < 0).
-Real FallHeight(Real z0, Real g, Real c1, Real t) {
-  const Real v_inf = g / c1;
-  return z0 + v_inf * t - v_inf * (-std::expm1(-c1 * t)) / c1;
-}
-
-// The first time the fall from z0 reaches height `contact` (bisection on [0, t_max]).
-double FallTime(Real z0, Real g, Real c1, Real contact, Real t_max) {
-  Real lo = 0, hi = t_max;
-  for (int k = 0; k < 200; ++k) {
-    const Real mid = (lo + hi) / 2;
-    (FallHeight(z0, g, c1, mid) > contact ? lo : hi) = mid;
-  }
-  return static_cast<double>(lo);
-}
+using testing::FallTime;
 
 std::shared_ptr<const ConvexPolyhedron> Box(const Vec3& half_extents) {
   return std::make_shared<const ConvexPolyhedron>(MakeBox(half_extents).value());
