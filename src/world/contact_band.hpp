@@ -25,4 +25,17 @@ inline double BandExit(double now, double tolerance, double max_speed, double ma
   return std::max(now + dt, std::nextafter(now, kInfinity));
 }
 
+// `wait_until` (a BandExit) capped for a body pressed back towards the contact at
+// `pressing` (> 0, m/s^2) that leaves it at `separating` (m/s): it comes back to where it is
+// after 2 separating / pressing, and must not land while the contact waits (a micro-bounce
+// under gravity would sink into the wall or table). A rebound too slow to matter (back within
+// a thousandth of the wait: a body resting on an edge or a vertex, which no wall holds yet)
+// keeps the wait, so that the clock moves on (and the progress check reports the crawl).
+inline double FallBackCap(double now, double wait_until, double separating, double pressing) {
+  if (!(pressing > 0) || !(separating > 0)) return wait_until;
+  const double back = 2.0 * separating / pressing;
+  if (back < 1e-3 * (wait_until - now)) return wait_until;
+  return std::min(wait_until, now + back);
+}
+
 }  // namespace sparsedyn

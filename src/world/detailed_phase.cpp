@@ -4,6 +4,7 @@
 #include "math/event_time.hpp"
 #include "sparse/meeting.hpp"
 #include "sparsedyn/assert.hpp"
+#include "world/pair_frame.hpp"
 #include "world/polyhedron_contacts.hpp"
 #include "world/sphere_contacts.hpp"
 #include "world/sphere_polyhedron_contacts.hpp"
@@ -109,7 +110,7 @@ void DetailedPhase::AfterRigidCollision(std::uint32_t a, std::uint32_t b,
                                         const ContactGeometry& contact,
                                         const RigidImpulseResult& result) {
   Statistics& stats = core_.observers.stats();
-  core_.observers.NotePenetration(contact.distance);
+  core_.observers.NotePenetration(contact.distance, PairTolerance(core_, a, b));
   ++stats.collisions;
   if (result.guarded) ++stats.collapse_guarded;
   if (core_.observers.WantsCollisions()) {

@@ -23,6 +23,7 @@ constexpr double kStallProgress = 1e-12;
 
 Status World::Impl::AdvanceTo(double t) {
   if (!std::isfinite(t)) return Error{"AdvanceTo: time must be finite"};
+  if (core_.observers.Breached()) return breach_;  // the World stopped at a broken invariant
   if (!started_) Start();
   ElementQueue& queue = sparse_.queue();
   CalendarQueue& engagement_queue = detailed_.queue();
@@ -44,6 +45,10 @@ Status World::Impl::AdvanceTo(double t) {
     }
     core_.bodies.paths.SetNow(top.time);
     Dispatch(top, engagement);
+    if (core_.observers.Breached()) [[unlikely]] {
+      breach_ = BreachError(top, engagement);
+      return breach_;
+    }
     memory_.CountEvent();
     if (sparse_.FetchesAhead()) look_ahead_.Fetch();
   }
@@ -120,6 +125,20 @@ void World::Impl::HandleStaticMeet(std::uint32_t i) {
   sparse_.PredictFull(i);  // the next static it reaches, or its next meeting
 }
 
+Error World::Impl::BreachError(const QueueTop& top, bool engagement) const {
+  std::ostringstream message;
+  message.precision(17);
+  const Observers& observers = core_.observers;
+  message << "no-penetration invariant broken at t = " << top.time << ": a contact overlapped by "
+          << observers.BreachDepth() << " m, beyond its contact band of "
+          << observers.BreachBand() << " m (contact_tolerance times the radii; event "
+          << EventKindName(static_cast<int>(top.kind)) << " of "
+          << (engagement ? "engagement " : "body ")
+          << (engagement ? top.slot : core_.bodies.ids.PublicOf(top.slot))
+          << "); the World stops here";
+  return Error{message.str()};
+}
+
 Status World::Impl::CheckProgress(const QueueTop& top, bool engagement,
                                   ProgressWindow& window) const {
   const Statistics& stats = core_.observers.stats();
@@ -157,8 +176,8 @@ Status World::Impl::CheckProgress(const QueueTop& top, bool engagement,
               << core_.settings.elastic_below_speed << std::setprecision(17)
               << " m/s) while the clock moved from t = " << window.start << " to " << top.time
               << " (bodies coming to rest that no wall "
-              << "holds: resting contact of polyhedra, and of bodies on each other, is not "
-              << "supported; " << last_event() << ")";
+              << "holds: resting contact of polyhedra on an edge or a vertex, and of bodies "
+              << "on each other, is not supported; " << last_event() << ")";
       return Error{message.str()};
     }
   }

@@ -27,17 +27,31 @@ class Observers {
   void Collision(const CollisionEvent& event) const { on_collision_(event); }
   void Segment(const MotionSegment& segment) const { on_segment_(segment); }
 
-  /// Notes the gap (negative: an overlap) of a contact being processed.
-  void NotePenetration(double gap) {
+  /// Notes the gap (negative: an overlap) of a contact being processed, whose contact band is
+  /// `band` (contact_tolerance times the radii): an overlap deeper than the band breaks the
+  /// no-penetration invariant, and the first such one is kept for the event loop to report.
+  void NotePenetration(double gap, double band) {
     if (-gap > max_penetration_) max_penetration_ = -gap;
+    if (-gap > band && !breached_) {
+      breached_ = true;
+      breach_depth_ = -gap;
+      breach_band_ = band;
+    }
   }
   double MaxPenetration() const { return max_penetration_; }
+  /// Whether some contact overlapped beyond its band; then how deep, and the band.
+  bool Breached() const { return breached_; }
+  double BreachDepth() const { return breach_depth_; }
+  double BreachBand() const { return breach_band_; }
 
  private:
   Statistics stats_;
   std::function<void(const CollisionEvent&)> on_collision_;
   std::function<void(const MotionSegment&)> on_segment_;
   double max_penetration_ = 0.0;
+  bool breached_ = false;
+  double breach_depth_ = 0.0;
+  double breach_band_ = 0.0;
 };
 
 }  // namespace sparsedyn

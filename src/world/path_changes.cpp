@@ -3,10 +3,18 @@
 
 namespace sparsedyn {
 
-void PathChanges::SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v) {
-  ElementPaths& paths = core_.bodies.paths;
+void PathChanges::SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v,
+                          const std::optional<Vec3>& omega) {
+  BodyStore& bodies = core_.bodies;
+  ElementPaths& paths = bodies.paths;
   const Vec3 p = paths.PositionNow(i);  // on the path so far
-  RebaseRotation(i);
+  if (omega) {
+    bodies.rigid.SetRotation(i, bodies.RigidPathOf(i).OrientationAt(paths.Now()).normalized(),
+                             *omega);
+    bodies.rigid.SetSpinRadius(i, bodies.SpinRadiusOf(i));
+  } else {
+    RebaseRotation(i);
+  }
   paths.accelerations().SetHeld(i, walls, paths.Size());
   for (int w = 0; w < 6; ++w) {
     if ((walls >> w & 1u) != 0) v[w / 2] = 0.0;  // axis-aligned walls: exact zeros

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "dynamics/god_plan.hpp"
 #include "world/sparse_phase.hpp"
@@ -39,9 +40,11 @@ class PathChanges {
   void SetPiece(std::uint32_t i, const GodState& state);
   /// A body moved at once to `position` with `orientation`, moving at v and omega (a teleport).
   void SetPose(std::uint32_t i, const Vec3& position, const Eigen::Quaterniond& orientation);
-  /// Sphere i held by the walls `walls` (bits; 0 releases it), moving at `v` otherwise: its
-  /// velocity and acceleration into the held walls become zero.
-  void SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v);
+  /// Body i held by the walls `walls` (bits; 0 releases it), moving at `v` otherwise: its
+  /// velocity and acceleration into the held walls become zero. A polyhedron held on a face
+  /// turns at `omega` from now (its spin about the wall's normal); a sphere keeps its spin.
+  void SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v,
+               const std::optional<Vec3>& omega = std::nullopt);
 
  private:
   // A tracked body's orientation at its new segment's start (now).

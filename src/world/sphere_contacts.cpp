@@ -29,7 +29,8 @@ void SphereContacts::Collide(std::uint32_t i, std::uint32_t j, const Vec3& norma
   const ElementPaths& paths = core_.bodies.paths;
   const BodyMaterials& materials = core_.bodies.materials;
   Statistics& stats = core_.observers.stats();
-  core_.observers.NotePenetration(gap);
+  core_.observers.NotePenetration(
+      gap, core_.settings.contact_tolerance * (materials.Radius(i) + materials.Radius(j)));
   if (core_.bodies.rigid.Tracked() && materials.Friction(i) * materials.Friction(j) > 0) {
     CollideWithFriction(i, j, normal, gap);
     return;
@@ -89,7 +90,6 @@ void SphereContacts::CollideWithFriction(std::uint32_t i, std::uint32_t j, const
   options.restitution = bodies.materials.Restitution(i) * bodies.materials.Restitution(j);
   options.friction = std::sqrt(bodies.materials.Friction(i) * bodies.materials.Friction(j));
   options.elastic_below_speed = core_.settings.elastic_below_speed;
-  core_.observers.NotePenetration(gap);
   RigidImpulseResult result;
   {
     const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);

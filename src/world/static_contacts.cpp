@@ -265,7 +265,7 @@ bool StaticContacts::Collide(std::uint32_t i, std::uint32_t s, const Touch& touc
     if (bodies.paths.accelerations().HeldBy(i) != 0) changes_.SetHeld(i, 0, moving.velocity);
     changes_.SetMotion(i, moving.velocity, moving.angular_velocity);
   }
-  core_.observers.NotePenetration(touch.contact.distance);
+  core_.observers.NotePenetration(touch.contact.distance, Tolerance(i, s));
   ++stats.collisions;
   ++stats.static_collisions;
   if (result.guarded) ++stats.collapse_guarded;

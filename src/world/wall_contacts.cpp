@@ -44,13 +44,70 @@ bool WallContacts::HoldAgainstWall(std::uint32_t i, int w, const Vec3& normal, c
   // A wall collision like any other (its segment comes with one), with the impulse that stops
   // the body's approach.
   Statistics& stats = core_.observers.stats();
-  core_.observers.NotePenetration(gap);
+  core_.observers.NotePenetration(gap, core_.settings.contact_tolerance * radius);
   ++stats.wall_holds;
   ++stats.wall_collisions;
   if (core_.observers.WantsCollisions()) {
     core_.observers.Collision(CollisionEvent{
         paths.Now(), core_.bodies.ids.IdOf(i), BodyId{}, w, paths.PositionNow(i) - radius * normal,
         -normal, std::max(-approach, 0.0) / core_.bodies.materials.InvMass(i)});
+  }
+  sparse_.PredictFull(i);
+  detailed_.PredictEngagementsOf(i);
+  return true;
+}
+
+namespace {
+
+// Whether the centre of mass c lies strictly inside the polygon `points` (in the plane of
+// normal n, in order around their mean) seen along n: every edge turns the same way to it.
+bool OverPolygon(const std::vector<Vec3>& points, const Vec3& c, const Vec3& n) {
+  int positive = 0, negative = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Vec3& a = points[k];
+    const Vec3& b = points[(k + 1) % points.size()];
+    const double turn = n.dot((b - a).cross(c - a));
+    positive += turn > 0 ? 1 : 0;
+    negative += turn < 0 ? 1 : 0;
+  }
+  const int n_points = static_cast<int>(points.size());
+  return positive == n_points || negative == n_points;
+}
+
+}  // namespace
+
+bool WallContacts::HoldPolyhedron(std::uint32_t i, int w, const Vec3& normal,
+                                  const RigidPath& path, const ContactGeometry& contact) {
+  // The end of a bounce series on a face (issue #37 part 1): three or more points on the wall
+  // around the centre of mass, each moving to or from it slower than the collapse guard, and
+  // the body pressed into the wall. Its velocity and acceleration into the wall become zero
+  // and of its spin only the part about the normal stays (the rest would lift the face: what
+  // the bounces were taking away), so it rests there, or slides and turns on the face, until
+  // a collision moves it. Edges and vertices, and faces of other bodies, are issue #37.
+  if (contact.points.size() < 3) return false;
+  const ElementPaths& paths = core_.bodies.paths;
+  if (!(normal.dot(paths.accelerations().Free(i)) < 0.0)) return false;
+  const double now = paths.Now();
+  for (const Vec3& x : contact.points) {
+    if (!(std::abs(normal.dot(path.PointVelocity(x, now))) < core_.settings.elastic_below_speed)) {
+      return false;
+    }
+  }
+  if (!OverPolygon(contact.points, path.centre.PositionAt(now), normal)) return false;
+  const Vec3 omega = normal.dot(path.omega) * normal;
+  const Vec3 v = path.centre.VelocityAt(now);
+  changes_.SetHeld(i, static_cast<std::uint8_t>(paths.accelerations().HeldBy(i) | 1u << w), v,
+                   omega);
+  Statistics& stats = core_.observers.stats();
+  core_.observers.NotePenetration(
+      contact.distance, core_.settings.contact_tolerance * core_.bodies.materials.Radius(i));
+  ++stats.wall_holds;
+  ++stats.wall_collisions;
+  if (core_.observers.WantsCollisions()) {
+    core_.observers.Collision(CollisionEvent{now, core_.bodies.ids.IdOf(i), BodyId{}, w,
+                                             contact.points.front(), contact.normal,
+                                             std::max(-normal.dot(v), 0.0) /
+                                                 core_.bodies.materials.InvMass(i)});
   }
   sparse_.PredictFull(i);
   detailed_.PredictEngagementsOf(i);
@@ -75,7 +132,7 @@ void WallContacts::HandleSphere(std::uint32_t i) {
     sparse_.PredictFull(i);
     return;
   }
-  core_.observers.NotePenetration(gap);
+  core_.observers.NotePenetration(gap, core_.settings.contact_tolerance * radius);
   double impulse = 0.0;
   bool guarded = false;
   {
@@ -129,7 +186,9 @@ Event WallContacts::PredictDragPolyhedron(std::uint32_t i, Event event) {
   const double tolerance = core_.settings.contact_tolerance * bodies.materials.Radius(i);
   // No further than its check, which predicts again with a new segment.
   const double end = std::min(event.time, bodies.paths.drags().CheckTime(i));
+  const std::uint8_t held = bodies.paths.accelerations().HeldBy(i);
   for (int w = 0; w < 6; ++w) {
+    if ((held >> w & 1u) != 0) continue;  // it rests on that face
     const WallPlane plane = BoxWall(core_.settings.container, w);
     double begin = now;
     if (plane.normal.dot(element.p) - plane.offset > element.r0) {
@@ -140,10 +199,12 @@ Event WallContacts::PredictDragPolyhedron(std::uint32_t i, Event event) {
     if (band_skip_ && *band_skip_ == std::make_pair(i, w)) {
       // It has just touched this wall without approaching: not before the band could close.
       const RigidPath path = bodies.RigidPathNow(i);
-      begin = std::max(begin, BandExit(now, tolerance,
-                                       path.centre.v0.norm() +
-                                           path.omega.norm() * bodies.materials.Radius(i),
-                                       bodies.AccelerationBound(i)));
+      const double wait = BandExit(now, tolerance,
+                                   path.centre.v0.norm() +
+                                       path.omega.norm() * bodies.materials.Radius(i),
+                                   bodies.AccelerationBound(i));
+      begin = std::max(begin, FallBackCap(now, wait, plane.normal.dot(path.centre.v0),
+                                          -plane.normal.dot(path.centre.a)));
     }
     const double limit = std::min(end, event.time);
     if (!(begin < limit)) continue;
@@ -169,7 +230,9 @@ Event WallContacts::PredictPolyhedron(std::uint32_t i, Event event) {
   const Pose pose = path.PoseAt(now);
   const Vec3 centre = pose.translation;
   const Vec3 velocity = path.centre.VelocityAt(now);
+  const std::uint8_t held = bodies.paths.accelerations().HeldBy(i);
   for (int w = 0; w < 6; ++w) {
+    if ((held >> w & 1u) != 0) continue;  // it rests on that face, turning about its normal
     const WallPlane plane = BoxWall(core_.settings.container, w);
     // The polyhedron cannot reach a wall before its bounding sphere does.
     double begin = now;
@@ -212,6 +275,9 @@ Event WallContacts::PredictPolyhedron(std::uint32_t i, Event event) {
         begin = BandExit(now, tolerance,
                          path.centre.VelocityAt(now).norm() + path.omega.norm() * radius,
                          path.centre.a.norm());
+        const Vec3 lowest = pose.ToWorld(polyhedron.vertex(nearest));
+        begin = FallBackCap(now, begin, plane.normal.dot(path.PointVelocity(lowest, now)),
+                            -plane.normal.dot(path.centre.a));
         if (begin >= event.time) continue;
       }
     }
@@ -269,6 +335,7 @@ void WallContacts::HandlePolyhedron(std::uint32_t i) {
              std::atan2((q - mean).dot(v), (q - mean).dot(u));
     });
   }
+  if (HoldPolyhedron(i, w, plane.normal, path, contact)) return;
   RigidImpulseResult result;
   {
     const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
@@ -281,7 +348,12 @@ void WallContacts::HandlePolyhedron(std::uint32_t i) {
     options.friction = bodies.materials.Friction(i);
     options.elastic_below_speed = core_.settings.elastic_below_speed;
     result = ApplyRigidImpulse(body, wall, contact, options);
-    if (result.rounds > 0) changes_.SetMotion(i, body.velocity, body.angular_velocity);
+    if (result.rounds > 0) {
+      // An impulse (a side wall met while resting on the floor) may tip it: no wall holds it
+      // then, until it comes to rest again.
+      if (bodies.paths.accelerations().HeldBy(i) != 0) changes_.SetHeld(i, 0, body.velocity);
+      changes_.SetMotion(i, body.velocity, body.angular_velocity);
+    }
   }
   if (result.rounds == 0) {
     // Touching without approaching: predict again with this wall held off for the band time.
@@ -290,7 +362,7 @@ void WallContacts::HandlePolyhedron(std::uint32_t i) {
     band_skip_.reset();
     return;
   }
-  core_.observers.NotePenetration(nearest);
+  core_.observers.NotePenetration(nearest, tolerance);
   ++stats.wall_collisions;
   if (result.guarded) ++stats.collapse_guarded;
   if (core_.observers.WantsCollisions()) {

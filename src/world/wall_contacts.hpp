@@ -37,6 +37,10 @@ class WallContacts {
   /// PredictPolyhedron for a polyhedron with drag, on its true motion.
   Event PredictDragPolyhedron(std::uint32_t i, Event event);
   bool HoldAgainstWall(std::uint32_t i, int w, const Vec3& normal, const Vec3& v, double gap);
+  /// Polyhedron i, on `path` now, touching wall w (normal into the box) at `contact`'s points
+  /// (in order around their mean): held on that face if it comes to rest there.
+  bool HoldPolyhedron(std::uint32_t i, int w, const Vec3& normal, const RigidPath& path,
+                      const ContactGeometry& contact);
 
   WorldCore& core_;
   SparsePhase& sparse_;

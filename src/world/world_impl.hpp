@@ -92,6 +92,8 @@ class World::Impl {
     std::uint64_t guarded;  // Statistics::collapse_guarded at its start
   };
   Status CheckProgress(const QueueTop& top, bool engagement, ProgressWindow& window) const;
+  // The error of a contact that overlapped beyond its band at this event.
+  Error BreachError(const QueueTop& top, bool engagement) const;
 
   DetailedPhase detailed_;  // before sparse_, whose scans read its engagements
   SparsePhase sparse_;
@@ -106,6 +108,7 @@ class World::Impl {
   Admission admission_;
   bool started_ = false;
   double max_radius_ = 0.0;
+  Error breach_;  // the broken invariant the World stopped at (Observers::Breached)
 
   friend class World;
 };
