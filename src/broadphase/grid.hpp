@@ -447,9 +447,10 @@ class Grid {
   }
   // The walk of a tagged work list of n heads (VisitGatheredBlock, VisitGatheredOuter): each
   // entry's successor is appended with its tag, and fn gets the shift the tag names
-  // (sx[ix], sy[iy], sz[iz]).
+  // (sx[ix], sy[iy], sz[iz]). Inline: out of line (GCC's choice since the World split) it
+  // cost the wrapped gathers 9 M instructions at N = 10^4 (fn's values kept in memory).
   template <typename Fn>
-  void WalkTagged(std::uint32_t* buffer, std::uint32_t n, const double* sx, const double* sy,
+  [[gnu::always_inline]] void WalkTagged(std::uint32_t* buffer, std::uint32_t n, const double* sx, const double* sy,
                   const double* sz, Fn& fn) const {
     constexpr std::uint32_t kIndexMask = (1u << kIndexBits) - 1;
     const char* const links = links_;  // in registers, as in VisitGathered

@@ -3,6 +3,20 @@
 
 namespace sparsedyn {
 
+void PathChanges::StartDragSegment(std::uint32_t i) { core_.bodies.StartDragSegment(i); }
+
+void PathChanges::AnnounceSegment(std::uint32_t i, std::uint32_t version) {
+  const ElementPaths& paths = core_.bodies.paths;
+  const PathStart& s = paths.Start(i);
+  MotionSegment segment{paths.Now(), core_.bodies.ids.IdOf(i), s.p0, s.v0, paths.PathOf(i).a,
+                        version};
+  if (core_.bodies.rigid.Tracked()) {
+    segment.orientation = core_.bodies.rigid.Orientation0(i);
+    segment.angular_velocity = core_.bodies.rigid.Omega(i);
+  }
+  core_.observers.Segment(segment);
+}
+
 void PathChanges::SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v,
                           const std::optional<Vec3>& omega) {
   BodyStore& bodies = core_.bodies;

@@ -105,19 +105,6 @@ void SparsePhase::HandleCrossing(std::uint32_t i) {
   PredictAfterCrossing(i, place, axis, direction);
 }
 
-void SparsePhase::PredictCollided(std::uint32_t i, std::uint32_t j) {
-  // j's own prediction is superseded: the actor-absent event of §4.2, removed in place.
-  const Prediction& pending = PredictionOf(j);
-  if (pending.kind != EventKind::kNone &&
-      !(pending.kind == EventKind::kSphereMeet && pending.target == i)) {
-    ++core_.observers.stats().stale_actor_absent;
-  }
-  // j's neighbours, fetched while i predicts (LookAhead fetched their heads an event ago).
-  if (fetch_ahead_) grid_->FetchAroundFirsts(grid_->CellOf(j));
-  PredictFull(i);
-  PredictFull(j);
-}
-
 double SparsePhase::WrapTime(std::uint32_t i) const {
   // As FinishPrediction predicts the crossing (from the segment start, never before now).
   const double t0 = core_.bodies.paths.Start(i).t0;

@@ -62,7 +62,8 @@ class World::Impl {
   /// Rebases every path at the current time and predicts every element afresh (the first
   /// AdvanceTo, and AddBody while running when the broad phase or the fast forms must change).
   void Start();
-  void Dispatch(const QueueTop& top, bool engagement);
+  /// Inline in AdvanceTo's loop: out of line it was a frame and a spilled QueueTop per event.
+  [[gnu::always_inline]] inline void Dispatch(const QueueTop& top, bool engagement);
   /// Body i's own event (kBodyTimer): its thrust changes as its schedule says, a god object
   /// goes on to its plan's next piece, or its drag segment's horizon ends (a drag check).
   void HandleBodyTimer(std::uint32_t i);
