@@ -61,7 +61,6 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
     std::uint32_t shape = accepted->shape;
     if (accepted->new_shape) shape = bodies.rigid.shapes().Insert(std::move(*accepted->new_shape));
     bodies.rigid.Append(shape, def.orientation.normalized(), def.angular_velocity);
-    bodies.rigid.SetSpinRadius(index, bodies.SpinRadiusOf(index));
   }
   bodies.envelopes.Append(index, def.envelope);
   // Drag: the body's true motion and the Taylor path of its element from now on, with an
@@ -70,6 +69,8 @@ Result<BodyId> World::Impl::AddBody(const BodyDef& def) {
   const double drag_error = kDragErrorFraction * radius;
   bodies.paths.drags().Append(index, drag, drag_error);
   if (bodies.HasDrag(index)) bodies.StartDragSegment(index);
+  // Its spin radius reads its path, which needs every per-body array (drag's included).
+  if (bodies.rigid.Tracked()) bodies.rigid.SetSpinRadius(index, bodies.SpinRadiusOf(index));
   bodies.thrusts.Append(index, def.thrust_schedule);
   bodies.gods.Append(index, std::move(god));
   const BodyId id = bodies.ids.Add(index);
