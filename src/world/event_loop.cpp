@@ -125,6 +125,14 @@ void World::Impl::HandleStaticMeet(std::uint32_t i) {
   sparse_.PredictFull(i);  // the next static it reaches, or its next meeting
 }
 
+std::string World::Impl::DescribeEvent(const QueueTop& top, bool engagement) const {
+  std::ostringstream out;
+  out << EventKindName(static_cast<int>(top.kind)) << " of "
+      << (engagement ? "engagement " : "body ")
+      << (engagement ? top.slot : core_.bodies.ids.PublicOf(top.slot));
+  return out.str();
+}
+
 Error World::Impl::BreachError(const QueueTop& top, bool engagement) const {
   std::ostringstream message;
   message.precision(17);
@@ -132,23 +140,14 @@ Error World::Impl::BreachError(const QueueTop& top, bool engagement) const {
   message << "no-penetration invariant broken at t = " << top.time << ": a contact overlapped by "
           << observers.BreachDepth() << " m, beyond its contact band of "
           << observers.BreachBand() << " m (contact_tolerance times the radii; event "
-          << EventKindName(static_cast<int>(top.kind)) << " of "
-          << (engagement ? "engagement " : "body ")
-          << (engagement ? top.slot : core_.bodies.ids.PublicOf(top.slot))
-          << "); the World stops here";
+          << DescribeEvent(top, engagement) << "); the World stops here";
   return Error{message.str()};
 }
 
 Status World::Impl::CheckProgress(const QueueTop& top, bool engagement,
                                   ProgressWindow& window) const {
   const Statistics& stats = core_.observers.stats();
-  const auto last_event = [&] {
-    std::ostringstream out;
-    out << "last event " << EventKindName(static_cast<int>(top.kind)) << " of "
-        << (engagement ? "engagement " : "body ")
-        << (engagement ? top.slot : core_.bodies.ids.PublicOf(top.slot));
-    return out.str();
-  };
+  const auto last_event = [&] { return "last event " + DescribeEvent(top, engagement); };
   std::ostringstream message;
   message.precision(17);
   // A stall: the clock stands still.

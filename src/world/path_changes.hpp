@@ -32,6 +32,12 @@ class PathChanges {
   }
   /// A body's new velocity and angular velocity (world frame); rotation is tracked.
   void SetMotion(std::uint32_t i, const Vec3& v, const Vec3& omega);
+  /// A collision's new motion: first a wall's hold on i ends (the wall takes it up again if it
+  /// still rests there), then SetMotion.
+  void SetCollidedMotion(std::uint32_t i, const Vec3& v, const Vec3& omega) {
+    if (core_.bodies.paths.accelerations().HeldBy(i) != 0) SetHeld(i, 0, v);
+    SetMotion(i, v, omega);
+  }
   /// A body's new free acceleration (gravity plus a new thrust), its velocity kept; a wall's
   /// hold ends (the wall takes it up again if the body still rests on it).
   void SetAcceleration(std::uint32_t i, const Vec3& free_acceleration);

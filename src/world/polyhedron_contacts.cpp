@@ -154,12 +154,8 @@ bool PolyhedronContacts::Collide(std::uint32_t a, std::uint32_t b,
     options.elastic_below_speed = core_.settings.elastic_below_speed;
     result = ApplyRigidImpulse(body_a, body_b, contact, options);
     if (result.rounds == 0) return false;
-    // A collision ends a wall's hold (the wall takes it up again if the body comes to rest).
-    const Accelerations& accelerations = bodies.paths.accelerations();
-    if (accelerations.HeldBy(a) != 0) changes_.SetHeld(a, 0, body_a.velocity);
-    if (accelerations.HeldBy(b) != 0) changes_.SetHeld(b, 0, body_b.velocity);
-    changes_.SetMotion(a, body_a.velocity, body_a.angular_velocity);
-    changes_.SetMotion(b, body_b.velocity, body_b.angular_velocity);
+    changes_.SetCollidedMotion(a, body_a.velocity, body_a.angular_velocity);
+    changes_.SetCollidedMotion(b, body_b.velocity, body_b.angular_velocity);
   }
   detailed_.AfterRigidCollision(a, b, contact, result);
   return true;

@@ -158,11 +158,8 @@ bool SpherePolyhedronContacts::Collide(const Pair& pair, const PointClosest& clo
     options.elastic_below_speed = core_.settings.elastic_below_speed;
     result = ApplyRigidImpulse(body_p, body_s, contact, options);
     if (result.rounds == 0) return false;
-    if (bodies.paths.accelerations().HeldBy(p) != 0) changes_.SetHeld(p, 0, body_p.velocity);
-    changes_.SetMotion(p, body_p.velocity, body_p.angular_velocity);
-    // A collision ends a wall's hold on the sphere (the wall takes it up again if it still rests).
-    if (bodies.paths.accelerations().HeldBy(s) != 0) changes_.SetHeld(s, 0, body_s.velocity);
-    changes_.SetMotion(s, body_s.velocity, body_s.angular_velocity);
+    changes_.SetCollidedMotion(p, body_p.velocity, body_p.angular_velocity);
+    changes_.SetCollidedMotion(s, body_s.velocity, body_s.angular_velocity);
   }
   detailed_.AfterRigidCollision(p, s, contact, result);
   return true;

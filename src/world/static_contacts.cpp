@@ -187,12 +187,8 @@ void StaticContacts::HandleContact(std::uint32_t k) {
   const double speed = bodies.paths.TrueVelocityAt(i, now).norm() +
                        bodies.rigid.SpinRadius(i) * bodies.rigid.Omega(i).norm();
   const double exit = ExitTime(i, s);
+  // A polyhedron with drag too: the checkpoint predicts on its true motion from there.
   const double again = BandExit(now, tolerance, speed, bodies.AccelerationBound(i));
-  if (bodies.HasDrag(i)) {
-    if (again < exit) PredictDragEngagement(k, again);
-    else detailed_.Schedule(k, exit);
-    return;
-  }
   e.contact_next = false;
   e.checkpoint = again < exit;
   detailed_.Schedule(k, std::min(again, exit));
@@ -261,9 +257,7 @@ bool StaticContacts::Collide(std::uint32_t i, std::uint32_t s, const Touch& touc
     result = touch.static_is_a ? ApplyRigidImpulse(fixed, moving, touch.contact, options)
                                : ApplyRigidImpulse(moving, fixed, touch.contact, options);
     if (result.rounds == 0) return false;
-    // A collision ends a wall's hold (the wall takes it up again if the body still rests).
-    if (bodies.paths.accelerations().HeldBy(i) != 0) changes_.SetHeld(i, 0, moving.velocity);
-    changes_.SetMotion(i, moving.velocity, moving.angular_velocity);
+    changes_.SetCollidedMotion(i, moving.velocity, moving.angular_velocity);
   }
   core_.observers.NotePenetration(touch.contact.distance, Tolerance(i, s));
   ++stats.collisions;

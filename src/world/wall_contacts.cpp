@@ -41,20 +41,26 @@ bool WallContacts::HoldAgainstWall(std::uint32_t i, int w, const Vec3& normal, c
   }
   const std::uint8_t walls = paths.accelerations().HeldBy(i);
   changes_.SetHeld(i, static_cast<std::uint8_t>(walls | 1u << w), v);
+  ReportHold(i, w, gap, paths.PositionNow(i) - radius * normal, normal, approach);
+  return true;
+}
+
+void WallContacts::ReportHold(std::uint32_t i, int w, double gap, const Vec3& point,
+                              const Vec3& normal, double approach) {
   // A wall collision like any other (its segment comes with one), with the impulse that stops
-  // the body's approach.
+  // the body's approach; then the body predicts along the wall.
   Statistics& stats = core_.observers.stats();
-  core_.observers.NotePenetration(gap, core_.settings.contact_tolerance * radius);
+  core_.observers.NotePenetration(
+      gap, core_.settings.contact_tolerance * core_.bodies.materials.Radius(i));
   ++stats.wall_holds;
   ++stats.wall_collisions;
   if (core_.observers.WantsCollisions()) {
     core_.observers.Collision(CollisionEvent{
-        paths.Now(), core_.bodies.ids.IdOf(i), BodyId{}, w, paths.PositionNow(i) - radius * normal,
-        -normal, std::max(-approach, 0.0) / core_.bodies.materials.InvMass(i)});
+        core_.Now(), core_.bodies.ids.IdOf(i), BodyId{}, w, point, -normal,
+        std::max(-approach, 0.0) / core_.bodies.materials.InvMass(i)});
   }
   sparse_.PredictFull(i);
   detailed_.PredictEngagementsOf(i);
-  return true;
 }
 
 namespace {
@@ -98,19 +104,7 @@ bool WallContacts::HoldPolyhedron(std::uint32_t i, int w, const Vec3& normal,
   const Vec3 v = path.centre.VelocityAt(now);
   changes_.SetHeld(i, static_cast<std::uint8_t>(paths.accelerations().HeldBy(i) | 1u << w), v,
                    omega);
-  Statistics& stats = core_.observers.stats();
-  core_.observers.NotePenetration(
-      contact.distance, core_.settings.contact_tolerance * core_.bodies.materials.Radius(i));
-  ++stats.wall_holds;
-  ++stats.wall_collisions;
-  if (core_.observers.WantsCollisions()) {
-    core_.observers.Collision(CollisionEvent{now, core_.bodies.ids.IdOf(i), BodyId{}, w,
-                                             contact.points.front(), contact.normal,
-                                             std::max(-normal.dot(v), 0.0) /
-                                                 core_.bodies.materials.InvMass(i)});
-  }
-  sparse_.PredictFull(i);
-  detailed_.PredictEngagementsOf(i);
+  ReportHold(i, w, contact.distance, contact.points.front(), normal, normal.dot(v));
   return true;
 }
 
@@ -348,12 +342,9 @@ void WallContacts::HandlePolyhedron(std::uint32_t i) {
     options.friction = bodies.materials.Friction(i);
     options.elastic_below_speed = core_.settings.elastic_below_speed;
     result = ApplyRigidImpulse(body, wall, contact, options);
-    if (result.rounds > 0) {
-      // An impulse (a side wall met while resting on the floor) may tip it: no wall holds it
-      // then, until it comes to rest again.
-      if (bodies.paths.accelerations().HeldBy(i) != 0) changes_.SetHeld(i, 0, body.velocity);
-      changes_.SetMotion(i, body.velocity, body.angular_velocity);
-    }
+    // An impulse (a side wall met while resting on the floor) may tip it: no wall holds it
+    // then, until it comes to rest again.
+    if (result.rounds > 0) changes_.SetCollidedMotion(i, body.velocity, body.angular_velocity);
   }
   if (result.rounds == 0) {
     // Touching without approaching: predict again with this wall held off for the band time.

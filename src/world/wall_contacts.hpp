@@ -41,6 +41,10 @@ class WallContacts {
   /// (in order around their mean): held on that face if it comes to rest there.
   bool HoldPolyhedron(std::uint32_t i, int w, const Vec3& normal, const RigidPath& path,
                       const ContactGeometry& contact);
+  /// The hold just set on body i by wall w (normal into the box), its gap and contact point,
+  /// reported and predicted from: `approach` is the normal velocity the hold stopped.
+  void ReportHold(std::uint32_t i, int w, double gap, const Vec3& point, const Vec3& normal,
+                  double approach);
 
   WorldCore& core_;
   SparsePhase& sparse_;

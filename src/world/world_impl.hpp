@@ -93,6 +93,8 @@ class World::Impl {
     std::uint64_t guarded;  // Statistics::collapse_guarded at its start
   };
   Status CheckProgress(const QueueTop& top, bool engagement, ProgressWindow& window) const;
+  // "kind of body N" (or "of engagement K") for an event's messages.
+  std::string DescribeEvent(const QueueTop& top, bool engagement) const;
   // The error of a contact that overlapped beyond its band at this event.
   Error BreachError(const QueueTop& top, bool engagement) const;
 
