@@ -78,8 +78,10 @@ struct WorldSettings {
   /// docs/lab/measurements.md, has the runs).
   double grid_cells_per_body = 6.0;
   /// Abort AdvanceTo with an error when this many events pass without the clock advancing by
-  /// more than a relative 1e-12 (inelastic collapse or a stuck configuration): no hang.
-  std::uint64_t stall_event_limit = 1u << 22;
+  /// more than a relative 1e-12 (inelastic collapse or a stuck configuration), or crawling on
+  /// slow collisions (docs/sparse-phase.md): no hang. The window is short enough that a
+  /// crawl of polyhedra (~10^5 events/s) is named within about a second.
+  std::uint64_t stall_event_limit = 1u << 16;
   bool profile_phases = false;  ///< measure Statistics::seconds_* (costs two clock reads an event)
   /// The clock's value when the World is made, s: a World built from the state of another at
   /// time t (a final scene written by `sparsedyn run --write-final-scene`) runs on from t.

@@ -79,14 +79,6 @@ class Accelerations {
     }
   }
 
-  /// The largest free acceleration of any body (m/s^2).
-  double MaxFreeNorm(std::size_t count) const {
-    if (!own_) return uniform_.norm();
-    double most = 0.0;
-    for (std::uint32_t i = 0; i < count; ++i) most = std::max(most, Free(i).norm());
-    return most;
-  }
-
   /// The bodies were renumbered: new body e is old body old_of_new[e].
   template <typename PermuteFn>
   void Permute(PermuteFn&& permute) {

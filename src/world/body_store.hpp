@@ -145,6 +145,10 @@ struct BodyStore {
   }
   /// narrow::SpinRadius of body i's current segment.
   double SpinRadiusOf(std::uint32_t i) const;
+  /// The largest acceleration of any surface point of the first `count` bodies on their free
+  /// paths (m/s^2): the free acceleration plus the turning's centripetal |omega|^2 r. What
+  /// presses bodies back into a contact they touch, without gravity too.
+  double MaxSurfaceAcceleration(std::uint32_t count) const;
 
   /// Renumbers the elements: new element e is old element old_of_new[e].
   void Permute(const std::vector<std::uint32_t>& old_of_new);

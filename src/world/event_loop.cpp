@@ -158,25 +158,27 @@ Status World::Impl::CheckProgress(const QueueTop& top, bool engagement,
             << last_event() << ")";
     return Error{message.str()};
   }
-  // A crawl: the clock moves, but nearly every event is a collision slower than the collapse
-  // guard, and faster than even every body bouncing at that speed under the largest
-  // acceleration could make them (one every 2 v / a per body): bodies at rest that no wall
-  // holds, rocking and bouncing on it ever faster (a polyhedron on the floor, a pile).
+  // A crawl: the clock moves, but a quarter or more of the events are collisions slower than
+  // the collapse guard, more of them than even every body bouncing at that speed could make
+  // (once every 2 v / a per body, a the largest acceleration of a surface point, turning
+  // included): bodies in lasting contact that no wall holds, rocking and bouncing ever faster
+  // (a polyhedron on an edge, a pile, or turning bodies pressed together without gravity after
+  // an inelastic collision).
   const std::uint64_t guarded = stats.collapse_guarded - window.guarded;
   const std::uint32_t n = core_.bodies.Size();
-  const double most = core_.bodies.paths.accelerations().MaxFreeNorm(n);
-  if (10 * guarded >= 9 * window.events && most > 0.0) {
-    const double bounce = 2.0 * core_.settings.elastic_below_speed / most;
+  if (4 * guarded >= window.events) {
+    const double most = core_.bodies.MaxSurfaceAcceleration(n);
+    const double bounce = most > 0.0 ? 2.0 * core_.settings.elastic_below_speed / most : 0.0;
     const double elapsed = top.time - window.start;
-    if (elapsed < static_cast<double>(window.events) * bounce /
+    if (elapsed < static_cast<double>(guarded) * bounce /
                       static_cast<double>(std::max<std::size_t>(n, 1))) {
       message << "event loop crawling: " << guarded << " of the last " << window.events
               << " events were collisions slower than elastic_below_speed (" << std::setprecision(6)
               << core_.settings.elastic_below_speed << std::setprecision(17)
               << " m/s) while the clock moved from t = " << window.start << " to " << top.time
-              << " (bodies coming to rest that no wall "
-              << "holds: resting contact of polyhedra on an edge or a vertex, and of bodies "
-              << "on each other, is not supported; " << last_event() << ")";
+              << " (bodies in lasting contact that no wall holds: resting contact of polyhedra "
+              << "on an edge or a vertex, of bodies on each other, and turning bodies pressed "
+              << "together, is not supported; " << last_event() << ")";
       return Error{message.str()};
     }
   }
