@@ -27,8 +27,25 @@ fi
 work=build/fuzz-corpus/$target
 findings=build/fuzz-findings/$target
 mkdir -p "$work" "$findings"
+log=$findings/last-run.log
+stamp=$findings/.started
+touch "$stamp"
 # detect_leaks: a leak is a finding too. -timeout: an input that takes 10 s is a hang.
+status=0
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   "build/asan/tests/fuzz/fuzz_$target" "$work" "tests/fuzz/corpus/$target" \
   -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
-  -artifact_prefix="$findings/" -print_final_stats=1 2>&1 | tail -n 12
+  -artifact_prefix="$findings/" -print_final_stats=1 > "$log" 2>&1 || status=$?
+tail -n 12 "$log"
+if ((status != 0)); then
+  # A finding must be reproducible from a CI log alone: the report's start (where it hung or
+  # crashed) and the input itself, base64, to decode into tests/fuzz/regressions/TARGET/.
+  echo "=== the report's start:"
+  grep -n -m1 -E '^==[0-9]+==|ALARM|deadly signal|ERROR: libFuzzer' "$log" | cut -d: -f1 |
+    xargs -r -I{} sed -n '{},+40p' "$log"
+  for input in $(find "$findings" -type f -newer "$stamp" -regex '.*/\(crash\|timeout\|leak\|oom\)-.*'); do
+    echo "=== the input $input ($(wc -c < "$input") bytes), base64:"
+    head -c 65536 "$input" | base64
+  done
+  exit "$status"
+fi

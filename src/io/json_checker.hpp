@@ -30,7 +30,8 @@ class Checker {
 
   void Fail(const std::string& path, const std::string& what);
   bool ok() const { return errors_.empty(); }
-  std::size_t ErrorCount() const { return errors_.size(); }
+  /// Every failure so far, kept or dropped: a caller that compares counts must see each one.
+  std::size_t ErrorCount() const { return errors_.size() + dropped_; }
   /// All errors, one per line: "<name>: <path>: <what>".
   Error ToError() const;
 

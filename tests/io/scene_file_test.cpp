@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -169,6 +170,18 @@ TEST(SceneFileErrors, EveryProblemIsListed) {
 }
 
 // --- semantic checks at BuildWorld: nothing is half-built ------------------------------------
+
+// Past the first 20 errors a shape spec missing its "faces" was built all the same (the dropped
+// errors were not counted): a fuzzed scene, an out-of-bounds read in the generator.
+TEST(SceneFileErrors, AShapeSpecIsRefusedAfterTheListIsFull) {
+  std::string bodies;
+  for (int i = 0; i < 19; ++i) bodies += R"({"shape": "cube.off", "colour": 1}, )";
+  const std::string error = ErrorOf(R"({"bodies": [)" + bodies +
+                                    R"({"colour": 1, "shape": {"generator": "random_convex"}}]})");
+  EXPECT_EQ(std::count(error.begin(), error.end(), '\n'), 20) << error;
+  EXPECT_NE(error.find("bodies[19].colour: unknown key"), std::string::npos) << error;
+  EXPECT_NE(error.find("\n... and 1 more"), std::string::npos) << error;
+}
 
 TEST(SceneFileWorld, OverlapAndOutsideTheContainerNameTheBody) {
   Result<SceneDescription> overlap = ParseScene(std::string(R"({"bodies": [{)") + kSphere + "}, {" +
