@@ -81,6 +81,16 @@ StaticContacts::Touch StaticContacts::TouchNow(std::uint32_t i, std::uint32_t s,
   return touch;
 }
 
+std::optional<Vec3> StaticContacts::StaticFaceNormal(std::uint32_t s, const Touch& touch) const {
+  const StaticBodies::Static& st = core_.bodies.statics[s];
+  if (st.shape == kNoIndex) return std::nullopt;
+  // The static's feature: body A's for a sphere on it, else B's (the moving body is A).
+  const FeatureId feature = touch.static_is_a ? touch.features.a : touch.features.b;
+  if (feature.type != FeatureType::kFace) return std::nullopt;
+  const ConvexPolyhedron& polyhedron = *core_.bodies.rigid.shapes()[st.shape].polyhedron;
+  return st.pose.rotation * polyhedron.face(feature.index).plane.normal;
+}
+
 void StaticContacts::PredictEngagement(std::uint32_t k) {
   Statistics& stats = core_.observers.stats();
   const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_detailed);
@@ -184,11 +194,21 @@ void StaticContacts::HandleContact(std::uint32_t k) {
     return;
   }
   // Touching, but no point approaches: look again once the band could have been closed.
-  const double speed = bodies.paths.TrueVelocityAt(i, now).norm() +
-                       bodies.rigid.SpinRadius(i) * bodies.rigid.Omega(i).norm();
+  double speed = bodies.paths.TrueVelocityAt(i, now).norm() +
+                 bodies.rigid.SpinRadius(i) * bodies.rigid.Omega(i).norm();
+  double acceleration = bodies.AccelerationBound(i);
+  if (const std::optional<Vec3> n = StaticFaceNormal(s, touch); n && !bodies.HasDrag(i)) {
+    // On a face of a convex static, the body is as far from the static as from the face's
+    // plane at least: only its motion across that plane can close the band.
+    const RigidPath path = bodies.RigidPathNow(i);
+    const GapClosing closing = PlaneGapClosing(*n, path.centre.VelocityAt(now), path.centre.a,
+                                               path.omega, bodies.rigid.SpinRadius(i));
+    speed = closing.speed;
+    acceleration = closing.acceleration;
+  }
   const double exit = ExitTime(i, s);
   // A polyhedron with drag too: the checkpoint predicts on its true motion from there.
-  const double again = BandExit(now, tolerance, speed, bodies.AccelerationBound(i));
+  const double again = BandExit(now, tolerance, speed, acceleration);
   e.contact_next = false;
   e.checkpoint = again < exit;
   detailed_.Schedule(k, std::min(again, exit));

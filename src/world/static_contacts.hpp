@@ -38,6 +38,8 @@ class StaticContacts {
     FeaturePair features;  // the walk's answer (a sphere against a polyhedron: in .a)
   };
   Touch TouchNow(std::uint32_t i, std::uint32_t s, std::optional<FeaturePair> warm) const;
+  /// The world normal of the static polyhedron's face in `touch`, if its feature is a face.
+  std::optional<Vec3> StaticFaceNormal(std::uint32_t s, const Touch& touch) const;
   /// The pair's contact tolerance: relative to the element's radius and the smaller of the two
   /// (a floor slab 10^4 times a pebble's size does not widen the pebble's band).
   double Tolerance(std::uint32_t i, std::uint32_t s) const;

@@ -266,9 +266,9 @@ Event WallContacts::PredictPolyhedron(std::uint32_t i, Event event) {
           event = Event{now, EventKind::kWallMeet, static_cast<std::uint8_t>(w), kNoIndex, 0};
           continue;
         }
-        begin = BandExit(now, tolerance,
-                         path.centre.VelocityAt(now).norm() + path.omega.norm() * radius,
-                         path.centre.a.norm());
+        const GapClosing closing = PlaneGapClosing(plane.normal, path.centre.VelocityAt(now),
+                                                   path.centre.a, path.omega, radius);
+        begin = BandExit(now, tolerance, closing.speed, closing.acceleration);
         const Vec3 lowest = pose.ToWorld(polyhedron.vertex(nearest));
         begin = FallBackCap(now, begin, plane.normal.dot(path.PointVelocity(lowest, now)),
                             -plane.normal.dot(path.centre.a));

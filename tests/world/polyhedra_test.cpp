@@ -265,6 +265,61 @@ TEST(PolyhedraWorld, TurningPolyhedraPressedTogetherWithoutGravityEndWithACrawlE
   EXPECT_TRUE(world->Validate());
 }
 
+// A scene whose meshes are data/'s, run to `until`.
+World RunSceneText(const std::string& text, double until) {
+  const std::filesystem::path source(SPARSEDYN_SOURCE_DIR);
+  const Result<SceneDescription> scene = ParseScene(text, "glide.json", source / "data");
+  EXPECT_TRUE(scene) << scene.error().message;
+  Result<World> world = BuildWorld(*scene);
+  EXPECT_TRUE(world) << world.error().message;
+  const Status status = world->AdvanceTo(until);
+  EXPECT_TRUE(status) << status.error().message;
+  return std::move(*world);
+}
+
+// A cube (half-size 1) flush against the wall x = 4, gliding along it and spinning about the
+// wall's normal: no gap changes, so no event. Its band was looked at again every 5 ns (the
+// full speed bounded the gap's rate): 10^8 events per second, a fuzzed scene.
+TEST(PolyhedraWorld, CubeGlidingAndSpinningFlushAlongAWallHasNoEvents) {
+  const World world = RunSceneText(
+      R"({"container": {"kind": "walled", "lo": [-4, -40, -4], "hi": [4, 40, 4]},
+          "bodies": [{"shape": "cube.off", "position": [3, 0, 0], "velocity": [0, 2, 0],
+                      "angular_velocity": [0.5, 0, 0]}]})",
+      10.0);
+  EXPECT_LE(world.Stats().events, 2u);
+  EXPECT_EQ(world.Stats().wall_collisions, 0u);
+  const BodyState body = world.StateAt(world.Bodies().front(), world.Time());
+  EXPECT_NEAR(body.position.y(), 20.0, 1e-12);
+  EXPECT_EQ(body.position.x(), 3.0);
+}
+
+// The same cube turning slowly about an axis in the wall's plane: an edge comes into the wall
+// and must meet it, not pass in (the turn across the wall is what the wait bounds).
+TEST(PolyhedraWorld, CubeFlushOnAWallTurningIntoItMeetsTheWall) {
+  const World world = RunSceneText(
+      R"({"container": {"kind": "walled", "lo": [-4, -40, -4], "hi": [4, 40, 4]},
+          "bodies": [{"shape": "cube.off", "position": [3, 0, 0], "velocity": [0, 2, 0],
+                      "angular_velocity": [0, 0, 0.01]}]})",
+      1.0);
+  EXPECT_EQ(world.Stats().wall_collisions, 1u);
+  EXPECT_LE(world.MaxPenetration(), 1e-9);
+  EXPECT_LT(world.Stats().events, 100u);
+}
+
+// On a static slab's top face, sliding and spinning about the face's normal: no event either.
+TEST(PolyhedraWorld, CubeGlidingFlushOnAStaticSlabHasNoEvents) {
+  const World world = RunSceneText(
+      R"({"container": {"kind": "open"},
+          "bodies": [{"shape": {"generator": "box", "half_extents": [50, 50, 1]},
+                      "position": [0, 0, -1], "static": true},
+                     {"shape": "cube.off", "position": [0, 0, 1], "velocity": [1, 0.5, 0],
+                      "angular_velocity": [0, 0, 2]}]})",
+      10.0);
+  EXPECT_LT(world.Stats().events, 10u);
+  EXPECT_EQ(world.Stats().collisions, 0u);
+  EXPECT_LE(world.MaxPenetration(), 1e-9);
+}
+
 TEST(PolyhedraWorld, ElasticBoxKeepsEnergyAndNeverInterpenetrates) {
   testing::PolyhedraSceneOptions options;
   options.n = 60;
