@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/point_box_tree.hpp"
 #include "geometry/shape_checks.hpp"
 #include "sparsedyn/geometry/convex_polyhedron.hpp"
 
@@ -342,7 +343,7 @@ Status CheckInput(const PolygonMesh& mesh, const MeshValidation& options) {
   return Status::Ok();
 }
 
-// Convexity: each face a convex polygon, and no vertex above any face plane (O(V F)).
+// Convexity: each face a convex polygon, and no vertex above any face plane.
 Status CheckConvexity(const std::vector<Eigen::Vector3d>& points, const std::vector<Loop>& loops,
                       const std::vector<FacePlane>& planes, const Names& names, double tolerance,
                       const std::string& tolerance_text) {
@@ -362,18 +363,23 @@ Status CheckConvexity(const std::vector<Eigen::Vector3d>& points, const std::vec
       }
     }
   }
+  // The vertex highest above any face plane: the first face's lowest-numbered one on ties, as
+  // a loop over every face and vertex would find it, but only in the boxes that reach it.
   double worst = 0.0;
   std::int32_t worst_face = -1, worst_vertex = -1;
+  const PointBoxTree tree(points);
   for (std::size_t f = 0; f < loops.size(); ++f) {
-    const FacePlane& plane = planes[f];
-    for (std::size_t v = 0; v < points.size(); ++v) {
-      const double above = plane.normal.dot(points[v]) - plane.offset;
-      if (above > worst) {
-        worst = above;
-        worst_face = static_cast<std::int32_t>(f);
-        worst_vertex = static_cast<std::int32_t>(v);
-      }
-    }
+    const auto face = static_cast<std::int32_t>(f);
+    tree.ForEachAbove(
+        planes[f].normal, planes[f].offset, [&] { return worst; },
+        [&](std::uint32_t v, double above) {
+          const auto vertex = static_cast<std::int32_t>(v);
+          if (above > worst || (above == worst && face == worst_face && vertex < worst_vertex)) {
+            worst = above;
+            worst_face = face;
+            worst_vertex = vertex;
+          }
+        });
   }
   if (worst > tolerance) {
     return Error{"the mesh is not convex: vertex " + names.V(worst_vertex) + " lies " + Num(worst) +

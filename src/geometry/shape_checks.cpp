@@ -6,7 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <utility>
+
+#include "geometry/point_box_tree.hpp"
 
 namespace sparsedyn {
 
@@ -151,14 +155,28 @@ Status CheckFinishedPolyhedron(const ConvexPolyhedron& polyhedron) {
   }
   // Convex: no vertex above a face plane (the final planes, as the narrow phase sees them).
   const double allowed = std::max(p.tolerance(), kMinRelativeThickness) * p.scale();
+  for (int v = 0; v < p.vertex_count(); ++v) {
+    if (!AllFinite(p.vertex(v))) {
+      return Error{"internal error: the finished polyhedron's vertex " + std::to_string(v) +
+                   " is " + Point(p.vertex(v))};
+    }
+  }
+  // Only the boxes of vertices that reach above a plane are looked into (PointBoxTree).
+  const PointBoxTree tree(p.vertices());
   for (int f = 0; f < p.face_count(); ++f) {
-    for (int v = 0; v < p.vertex_count(); ++v) {
-      const double above = p.face(f).plane.SignedDistance(p.vertex(v));
-      if (!(above <= allowed)) {
-        return Error{"internal error: the finished polyhedron is not convex: vertex " +
-                     std::to_string(v) + " lies " + Num(above) + " above face " +
-                     std::to_string(f) + " (allowed " + Num(allowed) + ")"};
-      }
+    std::optional<std::pair<int, double>> beyond;
+    tree.ForEachAbove(
+        p.face(f).plane.normal, p.face(f).plane.offset, [&] { return allowed; },
+        [&](std::uint32_t v, double above) {
+          const int vertex = static_cast<int>(v);
+          if (!(above <= allowed) && (!beyond || vertex < beyond->first)) {
+            beyond = std::make_pair(vertex, above);
+          }
+        });
+    if (beyond) {
+      return Error{"internal error: the finished polyhedron is not convex: vertex " +
+                   std::to_string(beyond->first) + " lies " + Num(beyond->second) +
+                   " above face " + std::to_string(f) + " (allowed " + Num(allowed) + ")"};
     }
   }
   if (!(p.volume() > 0.0 && std::isfinite(p.volume()) && AllFinite(p.centroid()) &&
