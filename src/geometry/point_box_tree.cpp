@@ -8,7 +8,8 @@ namespace sparsedyn {
 
 namespace {
 constexpr std::uint32_t kLeafPoints = 8;
-// Median splits halve the points: 2^40 points before the stack of ForEachAbove (64) is full.
+// ForEachAbove's stack holds one sibling a level: 64 is room for this depth (a median split
+// halves the points, so 2^40 of them before it binds).
 constexpr int kMaxDepth = 40;
 }  // namespace
 

@@ -277,15 +277,19 @@ World RunSceneText(const std::string& text, double until) {
   return std::move(*world);
 }
 
-// A cube (half-size 1) flush against the wall x = 4, gliding along it and spinning about the
+// A cube (half-size 1) flush against the wall x = 4, gliding along it at 2 m/s.
+std::string CubeFlushOnAWall(const std::string& angular_velocity) {
+  return R"({"container": {"kind": "walled", "lo": [-4, -40, -4], "hi": [4, 40, 4]},
+             "bodies": [{"shape": "cube.off", "position": [3, 0, 0], "velocity": [0, 2, 0],
+                         "angular_velocity": )" +
+         angular_velocity + "}]}";
+}
+
+// The cube flush against the wall x = 4, gliding along it and spinning about the
 // wall's normal: no gap changes, so no event. Its band was looked at again every 5 ns (the
 // full speed bounded the gap's rate): 10^8 events per second, a fuzzed scene.
 TEST(PolyhedraWorld, CubeGlidingAndSpinningFlushAlongAWallHasNoEvents) {
-  const World world = RunSceneText(
-      R"({"container": {"kind": "walled", "lo": [-4, -40, -4], "hi": [4, 40, 4]},
-          "bodies": [{"shape": "cube.off", "position": [3, 0, 0], "velocity": [0, 2, 0],
-                      "angular_velocity": [0.5, 0, 0]}]})",
-      10.0);
+  const World world = RunSceneText(CubeFlushOnAWall("[0.5, 0, 0]"), 10.0);
   EXPECT_LE(world.Stats().events, 2u);
   EXPECT_EQ(world.Stats().wall_collisions, 0u);
   const BodyState body = world.StateAt(world.Bodies().front(), world.Time());
@@ -296,11 +300,7 @@ TEST(PolyhedraWorld, CubeGlidingAndSpinningFlushAlongAWallHasNoEvents) {
 // The same cube turning slowly about an axis in the wall's plane: an edge comes into the wall
 // and must meet it, not pass in (the turn across the wall is what the wait bounds).
 TEST(PolyhedraWorld, CubeFlushOnAWallTurningIntoItMeetsTheWall) {
-  const World world = RunSceneText(
-      R"({"container": {"kind": "walled", "lo": [-4, -40, -4], "hi": [4, 40, 4]},
-          "bodies": [{"shape": "cube.off", "position": [3, 0, 0], "velocity": [0, 2, 0],
-                      "angular_velocity": [0, 0, 0.01]}]})",
-      1.0);
+  const World world = RunSceneText(CubeFlushOnAWall("[0, 0, 0.01]"), 1.0);
   EXPECT_EQ(world.Stats().wall_collisions, 1u);
   EXPECT_LE(world.MaxPenetration(), 1e-9);
   EXPECT_LT(world.Stats().events, 100u);
