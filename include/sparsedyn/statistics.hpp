@@ -21,6 +21,8 @@ struct Statistics {
   std::uint64_t early_events = 0;         ///< a meeting that was not yet touching: predicted again
   std::uint64_t collapse_guarded = 0;     ///< collisions made elastic by the collapse guard
   std::uint64_t wall_holds = 0;  ///< bodies brought to rest by a wall: spheres, polyhedra on a face (also wall collisions)
+  std::uint64_t static_holds = 0;  ///< bodies brought to rest on a static's face (also static collisions)
+  std::uint64_t static_leaves = 0;  ///< held bodies whose centre of mass left a static's face
   /// Pairs of polyhedra whose bounding spheres started to overlap.
   std::uint64_t engagements_started = 0;
   /// Engaged pairs whose spheres separated again.

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -9,11 +8,22 @@
 
 namespace sparsedyn {
 
+/// What holds a body at rest against a surface (docs/sparse-phase.md#coming-to-rest): walls
+/// (bits, one per box wall) and at most one static body's face, whose unit normal points from
+/// the static to the body.
+struct Hold {
+  std::uint8_t walls = 0;
+  std::uint32_t on_static = kNoIndex;  // the static's index (StaticBodies), or none
+  Vec3 normal = Vec3::Zero();          // the static face's normal when on_static is set
+  std::int32_t face = -1;              // that face's index in the static's polyhedron
+  bool Any() const { return walls != 0 || on_static != kNoIndex; }
+};
+
 /// Each body's acceleration during its current segment. Gravity alone is one vector shared by
 /// every body (a gas on straight lines reads no per-body value) until some body has an
-/// acceleration of its own (a thrust, a wall's hold), when each body gets its own. Once a wall
-/// holds a body (docs/sparse-phase.md#coming-to-rest), the free acceleration (gravity plus
-/// thrust) each body returns to when released is kept beside it, with the walls that hold it.
+/// acceleration of its own (a thrust, a hold), when each body gets its own. Once a wall or a
+/// static face holds a body, the free acceleration (gravity plus thrust) each body returns to
+/// when released is kept beside it, with what holds it.
 class Accelerations {
  public:
   explicit Accelerations(const Vec3& gravity) : uniform_(gravity) {}
@@ -30,6 +40,23 @@ class Accelerations {
   }
   /// Bit w: wall w holds body i (0 before the first hold).
   std::uint8_t HeldBy(std::uint32_t i) const { return held_by_.empty() ? 0 : held_by_[i]; }
+  /// The static face that holds body i, if any (its on_static is kNoIndex if none).
+  Hold HoldOf(std::uint32_t i) const {
+    Hold hold;
+    hold.walls = HeldBy(i);
+    if (!on_static_.empty() && on_static_[i].on_static != kNoIndex) {
+      hold.on_static = on_static_[i].on_static;
+      hold.normal = on_static_[i].normal;
+      hold.face = on_static_[i].face;
+    }
+    return hold;
+  }
+  /// Whether a static's face holds body i.
+  bool OnStatic(std::uint32_t i) const {
+    return !on_static_.empty() && on_static_[i].on_static != kNoIndex;
+  }
+  bool Held(std::uint32_t i) const { return HoldOf(i).Any(); }
+  /// Whether some body was ever held (each body then has its own acceleration).
   bool AnyHeld() const { return !held_by_.empty(); }
 
   /// A new body (index size()) with the free acceleration `a`.
@@ -43,12 +70,14 @@ class Accelerations {
       held_by_.push_back(0);
       free_.push_back(a);
     }
+    if (!on_static_.empty()) on_static_.push_back(StaticHold{});
   }
 
-  /// Body i held by `walls` (bits, 0: released): its acceleration is the free one with the
-  /// components along the held walls' axes zeroed (the walls are axis-aligned: exact zeros,
-  /// so the gap stays as it is). Returns that acceleration.
-  Vec3 SetHeld(std::uint32_t i, std::uint8_t walls, std::size_t count) {
+  /// Body i held by `hold` (hold.Any() false: released): its acceleration is the free one
+  /// with the components along the held walls' axes zeroed (the walls are axis-aligned: exact
+  /// zeros, so the gap stays as it is) and, on a static face, its part along the face's normal
+  /// removed. Returns that acceleration.
+  Vec3 SetHeld(std::uint32_t i, const Hold& hold, std::size_t count) {
     if (held_by_.empty()) {
       // The first hold: every body gets its own acceleration, and its free one is kept.
       if (!own_) per_body_.assign(count, uniform_);
@@ -56,12 +85,19 @@ class Accelerations {
       free_ = per_body_;
       held_by_.assign(count, 0);
     }
-    held_by_[i] = walls;
-    Vec3 a = free_[i];
+    if (hold.on_static != kNoIndex && on_static_.empty()) on_static_.assign(count, StaticHold{});
+    held_by_[i] = hold.walls;
+    if (!on_static_.empty()) on_static_[i] = StaticHold{hold.normal, hold.on_static, hold.face};
+    per_body_[i] = HeldAcceleration(free_[i], hold);
+    return per_body_[i];
+  }
+
+  /// The acceleration `a` has under `hold`.
+  static Vec3 HeldAcceleration(Vec3 a, const Hold& hold) {
     for (int w = 0; w < 6; ++w) {
-      if ((walls >> w & 1u) != 0) a[w / 2] = 0.0;
+      if ((hold.walls >> w & 1u) != 0) a[w / 2] = 0.0;
     }
-    per_body_[i] = a;
+    if (hold.on_static != kNoIndex) a -= hold.normal.dot(a) * hold.normal;
     return a;
   }
 
@@ -77,6 +113,7 @@ class Accelerations {
       free_[i] = a;
       held_by_[i] = 0;
     }
+    if (!on_static_.empty()) on_static_[i] = StaticHold{};
   }
 
   /// The bodies were renumbered: new body e is old body old_of_new[e].
@@ -87,11 +124,12 @@ class Accelerations {
       permute(held_by_);
       permute(free_);
     }
+    if (!on_static_.empty()) permute(on_static_);
   }
 
   std::size_t MemoryBytes() const {
     return per_body_.capacity() * sizeof(Vec3) + held_by_.capacity() +
-           free_.capacity() * sizeof(Vec3);
+           free_.capacity() * sizeof(Vec3) + on_static_.capacity() * sizeof(StaticHold);
   }
 
  private:
@@ -100,6 +138,12 @@ class Accelerations {
   std::vector<Vec3> per_body_;      // once own_
   std::vector<std::uint8_t> held_by_;  // once some wall held a body
   std::vector<Vec3> free_;          // likewise
+  struct StaticHold {
+    Vec3 normal = Vec3::Zero();
+    std::uint32_t on_static = kNoIndex;
+    std::int32_t face = -1;
+  };
+  std::vector<StaticHold> on_static_;  // once some static face held a body
 };
 
 }  // namespace sparsedyn

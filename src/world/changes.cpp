@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "base/format.hpp"
+#include "world/static_leave.hpp"
 #include "world/world_impl.hpp"
 
 namespace sparsedyn {
@@ -61,7 +62,15 @@ Status World::Impl::RemoveBody(BodyId id) {
   if (core_.bodies.ids.Valid(id) && core_.bodies.ids.IsStaticSlot(id.index)) {
     // A static: its engagements end with a restart (as a World built without it).
     BodyIds& ids = core_.bodies.ids;
-    core_.bodies.statics.Remove(StaticBodies::IndexOf(ids.InternalOf(id.index)));
+    const std::uint32_t s = StaticBodies::IndexOf(ids.InternalOf(id.index));
+    // What rested on it falls (or rests on what else holds it).
+    for (std::uint32_t i = 0; i < core_.bodies.Size(); ++i) {
+      Hold hold = core_.bodies.paths.accelerations().HoldOf(i);
+      if (hold.on_static != s) continue;
+      hold.on_static = kNoIndex;
+      changes_.SetHeld(i, hold, core_.bodies.paths.VelocityNow(i));
+    }
+    core_.bodies.statics.Remove(s);
     ids.Remove(id.index);
     if (started_) Start();
     return Status::Ok();
@@ -97,6 +106,7 @@ Status World::Impl::SetVelocity(BodyId id, const Vec3& velocity) {
   Result<std::uint32_t> element = MovableOf(id, "SetVelocity");
   if (!element) return element.error();
   if (std::optional<Error> error = CheckFinite(velocity, "SetVelocity", "velocity")) return *error;
+  changes_.Release(*element);
   changes_.SetVelocity(*element, velocity);
   AfterChange(*element);
   return Status::Ok();
@@ -112,6 +122,7 @@ Status World::Impl::SetAngularVelocity(BodyId id, const Vec3& angular_velocity) 
   BodyStore& bodies = core_.bodies;
   const std::uint32_t i = *element;
   bodies.rigid.Track(bodies.Size());  // from now on rotation matters
+  changes_.Release(i);
   changes_.SetMotion(i, bodies.paths.VelocityNow(i), angular_velocity);
   AfterChange(i);
   return Status::Ok();
@@ -128,6 +139,7 @@ Status World::Impl::ApplyImpulse(BodyId id, const Vec3& impulse, const Vec3& poi
   const Vec3 centre = bodies.paths.PathOf(i).PositionAt(now);
   // In a periodic box the path is not wrapped between restarts while StateAt is: the lever arm
   // is the image of point - centre nearest zero, whichever image either is given in.
+  changes_.Release(i);
   const Vec3 torque_impulse = core_.MinimumImage(point - centre).cross(impulse);
   if (!torque_impulse.isZero(0.0)) bodies.rigid.Track(bodies.Size());
   const Vec3 v = bodies.paths.VelocityNow(i) + bodies.materials.InvMass(i) * impulse;
@@ -211,6 +223,16 @@ void World::Impl::HandleBodyTimer(std::uint32_t i) {
     changes_.SetPiece(i, bodies.gods.Follow(i, core_.Now()));
   } else if (bodies.thrusts.NextTime(i) <= core_.Now()) {
     changes_.SetAcceleration(i, core_.settings.gravity + bodies.thrusts.TakeNext(i));
+  } else if (bodies.paths.accelerations().OnStatic(i)) {
+    // Its leave time, or a little before it (never late): once its centre of mass is at the
+    // face's boundary the static's hold ends (it slides off, or tips over the edge); else it
+    // predicts again.
+    if (StaticLeaveTime(bodies, i) <= core_.Now()) {
+      Hold hold = bodies.paths.accelerations().HoldOf(i);
+      hold.on_static = kNoIndex;
+      changes_.SetHeld(i, hold, bodies.paths.VelocityNow(i));
+      ++core_.observers.stats().static_leaves;
+    }
   } else {
     // A drag check (App. E.2): the element's envelope holds the true motion up to here; a new
     // segment from the true state (its version up: partners predict against the new one).

@@ -17,7 +17,7 @@ void PathChanges::AnnounceSegment(std::uint32_t i, std::uint32_t version) {
   core_.observers.Segment(segment);
 }
 
-void PathChanges::SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v,
+void PathChanges::SetHeld(std::uint32_t i, const Hold& hold, Vec3 v,
                           const std::optional<Vec3>& omega) {
   BodyStore& bodies = core_.bodies;
   ElementPaths& paths = bodies.paths;
@@ -29,11 +29,9 @@ void PathChanges::SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v,
   } else {
     RebaseRotation(i);
   }
-  paths.accelerations().SetHeld(i, walls, paths.Size());
-  for (int w = 0; w < 6; ++w) {
-    if ((walls >> w & 1u) != 0) v[w / 2] = 0.0;  // axis-aligned walls: exact zeros
-  }
-  paths.SetStart(i, PathStart{p, v, paths.Now()});
+  paths.accelerations().SetHeld(i, hold, paths.Size());
+  // The velocity into what holds it goes, as the acceleration's (walls: exact zeros).
+  paths.SetStart(i, PathStart{p, Accelerations::HeldAcceleration(v, hold), paths.Now()});
   ReportSegment(i);
 }
 

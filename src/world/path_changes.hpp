@@ -32,11 +32,16 @@ class PathChanges {
   }
   /// A body's new velocity and angular velocity (world frame); rotation is tracked.
   void SetMotion(std::uint32_t i, const Vec3& v, const Vec3& omega);
-  /// A collision's new motion: first a wall's hold on i ends (the wall takes it up again if it
-  /// still rests there), then SetMotion.
+  /// A collision's new motion: first a hold on i ends (the wall or the static takes it up
+  /// again if it still rests there), then SetMotion.
   void SetCollidedMotion(std::uint32_t i, const Vec3& v, const Vec3& omega) {
-    if (core_.bodies.paths.accelerations().HeldBy(i) != 0) SetHeld(i, 0, v);
+    if (core_.bodies.paths.accelerations().Held(i)) SetHeld(i, Hold{}, v);
     SetMotion(i, v, omega);
+  }
+  /// Whatever holds body i lets it go, its motion kept (a push from outside: SetVelocity,
+  /// ApplyImpulse; what still holds it takes it up again).
+  void Release(std::uint32_t i) {
+    if (core_.bodies.paths.accelerations().Held(i)) SetHeld(i, Hold{}, core_.bodies.paths.VelocityNow(i));
   }
   /// A body's new free acceleration (gravity plus a new thrust), its velocity kept; a wall's
   /// hold ends (the wall takes it up again if the body still rests on it).
@@ -46,10 +51,11 @@ class PathChanges {
   void SetPiece(std::uint32_t i, const GodState& state);
   /// A body moved at once to `position` with `orientation`, moving at v and omega (a teleport).
   void SetPose(std::uint32_t i, const Vec3& position, const Eigen::Quaterniond& orientation);
-  /// Body i held by the walls `walls` (bits; 0 releases it), moving at `v` otherwise: its
-  /// velocity and acceleration into the held walls become zero. A polyhedron held on a face
-  /// turns at `omega` from now (its spin about the wall's normal); a sphere keeps its spin.
-  void SetHeld(std::uint32_t i, std::uint8_t walls, Vec3 v,
+  /// Body i held by `hold` (walls and a static face; Hold{} releases it), moving at `v`
+  /// otherwise: its velocity and acceleration into what holds it become zero. A polyhedron
+  /// held on a face turns at `omega` from now (its spin about the normal); a sphere keeps its
+  /// spin.
+  void SetHeld(std::uint32_t i, const Hold& hold, Vec3 v,
                const std::optional<Vec3>& omega = std::nullopt);
 
  private:

@@ -4,6 +4,7 @@
 #include "world/sparse_phase.hpp"
 
 #include "world/phase_timer.hpp"
+#include "world/static_leave.hpp"
 #include "world/wall_contacts.hpp"
 
 namespace sparsedyn {
@@ -119,8 +120,12 @@ Event SparsePhase::FinishPrediction(std::uint32_t i, const Candidate& best) {
   if (polyhedra && !god && core_.Walled()) event = walls_->PredictPolyhedron(i, event);
   // A change of its thrust at a given time (its schedule), a god object's next piece, and the
   // check at the end of a drag segment's horizon, are the body's own events.
-  const double timer = god ? core_.bodies.gods.NextSwitch(i)
-                           : std::min(core_.bodies.thrusts.NextTime(i), drags.CheckTime(i));
+  // A body held on a static's face also leaves it at a time of its own (StaticLeaveTime).
+  double timer = god ? core_.bodies.gods.NextSwitch(i)
+                     : std::min(core_.bodies.thrusts.NextTime(i), drags.CheckTime(i));
+  if (!god && core_.bodies.paths.accelerations().OnStatic(i)) {
+    timer = std::min(timer, StaticLeaveTime(core_.bodies, i));
+  }
   if (timer < event.time) event = Event{MaxOf(now, timer), EventKind::kBodyTimer, 0, kNoIndex, 0};
   return event;
 }

@@ -46,10 +46,10 @@ void SphereContacts::Collide(std::uint32_t i, std::uint32_t j, const Vec3& norma
       changes_.SetVelocity(i, result.v_a);
       changes_.SetVelocity(j, result.v_b);
     } else {
-      // A collision with another body ends a wall's hold (the wall takes it up again if the
-      // body is still at rest against it).
-      changes_.SetHeld(i, 0, result.v_a);
-      changes_.SetHeld(j, 0, result.v_b);
+      // A collision with another body ends a hold (the wall or static takes it up again if
+      // the body is still at rest against it).
+      changes_.SetHeld(i, Hold{}, result.v_a);
+      changes_.SetHeld(j, Hold{}, result.v_b);
     }
   }
   ++stats.collisions;
@@ -94,8 +94,8 @@ void SphereContacts::CollideWithFriction(std::uint32_t i, std::uint32_t j, const
   {
     const PhaseTimer timer(core_.settings.profile_phases, stats.seconds_response);
     result = ApplyRigidImpulse(a, b, contact, options);
-    changes_.SetMotion(i, a.velocity, a.angular_velocity);
-    changes_.SetMotion(j, b.velocity, b.angular_velocity);
+    changes_.SetCollidedMotion(i, a.velocity, a.angular_velocity);
+    changes_.SetCollidedMotion(j, b.velocity, b.angular_velocity);
   }
   ++stats.collisions;
   if (result.guarded) ++stats.collapse_guarded;

@@ -12,6 +12,8 @@
 #include "sparse/meeting.hpp"
 #include "world/contact_band.hpp"
 #include "world/phase_timer.hpp"
+#include "world/static_leave.hpp"
+#include "world/support_polygon.hpp"
 
 namespace sparsedyn {
 
@@ -114,6 +116,13 @@ void StaticContacts::PredictEngagement(std::uint32_t k) {
   e.contact_next = false;
   e.checkpoint = false;
   double time = exit;
+  if (bodies.paths.accelerations().HoldOf(i).on_static == s) {
+    // Held on a face of this convex static: the body is on the far side of the face's plane,
+    // all of the static on the near side, so no other contact is possible; the hold ends when
+    // its centre leaves the face (a body timer, StaticLeaveTime) or a collision moves it.
+    detailed_.Schedule(k, exit);
+    return;
+  }
   if (touch.contact.distance <= tolerance) {
     e.contact_next = true;  // touching now: the handler decides whether any point approaches
     detailed_.Schedule(k, now);
@@ -184,7 +193,7 @@ void StaticContacts::HandleContact(std::uint32_t k) {
     PredictEngagement(k);
     return;
   }
-  if (Collide(i, s, touch)) return;
+  if (HoldOnFace(i, s, touch) || Collide(i, s, touch)) return;
   const BodyStore& bodies = core_.bodies;
   const double now = core_.Now();
   if (bodies.HasDrag(i) && !bodies.IsPolyhedron(i)) {
@@ -254,6 +263,75 @@ void StaticContacts::PredictDragEngagement(std::uint32_t k, double begin) {
   e.contact_next = contact < end;
   e.checkpoint = false;
   detailed_.Schedule(k, e.contact_next ? contact : exit);
+}
+
+bool StaticContacts::HoldOnFace(std::uint32_t i, std::uint32_t s, const Touch& touch) {
+  // As on a wall (WallContacts::HoldAgainstWall, HoldPolyhedron): touching a face of the
+  // static, moving to or from it slower than the collapse guard at every contact point, pressed
+  // into it by gravity or thrust, and (a polyhedron) on a face of its own with the centre of
+  // mass over the contact polygon. Its velocity and acceleration along the face's normal go,
+  // and of a polyhedron's spin only the part about the normal stays. Bodies with drag, and a
+  // body held by another static already, are left to bounce.
+  const BodyStore& bodies = core_.bodies;
+  const std::optional<Vec3> n = StaticFaceNormal(s, touch);
+  if (!n || bodies.HasDrag(i)) return false;
+  const Accelerations& accelerations = bodies.paths.accelerations();
+  Hold hold = accelerations.HoldOf(i);
+  if (hold.on_static != kNoIndex || !(n->dot(accelerations.Free(i)) < 0.0)) return false;
+  const double now = core_.Now();
+  const RigidPath path = bodies.RigidPathNow(i);
+  const double guard = core_.settings.elastic_below_speed;
+  std::optional<Vec3> omega;
+  if (bodies.IsPolyhedron(i)) {
+    std::vector<Vec3> points = touch.contact.points;
+    if (points.size() < 3) return false;
+    for (const Vec3& x : points) {
+      if (!(std::abs(n->dot(path.PointVelocity(x, now))) < guard)) return false;
+    }
+    OrderAroundMean(points, *n);
+    if (!OverPolygon(points, path.centre.PositionAt(now), *n)) return false;
+    omega = n->dot(path.omega) * *n;
+  } else if (!(std::abs(n->dot(path.centre.VelocityAt(now))) < guard)) {
+    return false;
+  }
+  hold.on_static = s;
+  hold.normal = *n;
+  hold.face = (touch.static_is_a ? touch.features.a : touch.features.b).index;
+  const Vec3 v = path.centre.VelocityAt(now);
+  // Its centre must be inside the face, with time to go (else it would leave as it lands).
+  Path centre = path.centre;
+  centre.v0 = Accelerations::HeldAcceleration(v, hold);
+  centre.a = Accelerations::HeldAcceleration(accelerations.Free(i), hold);
+  centre.p0 = path.centre.PositionAt(now);
+  centre.t0 = now;
+  {
+    const StaticBodies::Static& st = bodies.statics[s];
+    const ConvexPolyhedron& polyhedron = *bodies.rigid.shapes()[st.shape].polyhedron;
+    std::vector<Vec3> loop;
+    for (const std::int32_t vertex : polyhedron.FaceVertices(hold.face)) {
+      loop.push_back(st.pose.ToWorld(polyhedron.vertex(vertex)));
+    }
+    if (!(FaceLeaveTime(loop, *n, centre, now) > now)) return false;
+  }
+  changes_.SetHeld(i, hold, v, omega);
+  Statistics& stats = core_.observers.stats();
+  core_.observers.NotePenetration(touch.contact.distance, Tolerance(i, s));
+  ++stats.static_holds;
+  ++stats.collisions;
+  ++stats.static_collisions;
+  if (core_.observers.WantsCollisions()) {
+    const BodyId moving_id = bodies.ids.IdOf(i), static_id = bodies.ids.IdOfSlot(bodies.statics[s].slot);
+    const double impulse = std::max(-n->dot(v), 0.0) / bodies.materials.InvMass(i);
+    // The normal from A to B: from the static to the body when the static is A.
+    const Vec3 normal = touch.static_is_a ? *n : -*n;
+    core_.observers.Collision(CollisionEvent{now, touch.static_is_a ? static_id : moving_id,
+                                             touch.static_is_a ? moving_id : static_id, -1,
+                                             touch.contact.points.front(), normal, impulse});
+  }
+  if (sparse_.PredictionOf(i).kind != EventKind::kNone) ++stats.stale_actor_absent;
+  sparse_.PredictFull(i);
+  detailed_.PredictEngagementsOf(i);
+  return true;
 }
 
 bool StaticContacts::Collide(std::uint32_t i, std::uint32_t s, const Touch& touch) {

@@ -48,6 +48,9 @@ class StaticContacts {
   RigidPath PathOfStatic(std::uint32_t s) const;
   /// When element i's sphere leaves static s's box (never early).
   double ExitTime(std::uint32_t i, std::uint32_t s) const;
+  /// The end of a bounce series on static s's face (docs/sparse-phase.md#coming-to-rest):
+  /// element i, touching s as `touch` says, held there if it comes to rest. False otherwise.
+  bool HoldOnFace(std::uint32_t i, std::uint32_t s, const Touch& touch);
   /// The collision of i and s touching as `touch` says: false when no point approaches.
   bool Collide(std::uint32_t i, std::uint32_t s, const Touch& touch);
   /// Engagement k of a body with drag: its contact on the true motion (DragContacts) from

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <vector>
 
 #include "dynamics/rigid_collision.hpp"
@@ -13,6 +12,7 @@
 #include "sparse/meeting.hpp"
 #include "world/contact_band.hpp"
 #include "world/phase_timer.hpp"
+#include "world/support_polygon.hpp"
 
 namespace sparsedyn {
 
@@ -39,8 +39,9 @@ bool WallContacts::HoldAgainstWall(std::uint32_t i, int w, const Vec3& normal, c
       !(normal.dot(paths.accelerations().Free(i)) < 0.0)) {
     return false;
   }
-  const std::uint8_t walls = paths.accelerations().HeldBy(i);
-  changes_.SetHeld(i, static_cast<std::uint8_t>(walls | 1u << w), v);
+  Hold hold = paths.accelerations().HoldOf(i);
+  hold.walls = static_cast<std::uint8_t>(hold.walls | 1u << w);
+  changes_.SetHeld(i, hold, v);
   ReportHold(i, w, gap, paths.PositionNow(i) - radius * normal, normal, approach);
   return true;
 }
@@ -63,25 +64,6 @@ void WallContacts::ReportHold(std::uint32_t i, int w, double gap, const Vec3& po
   detailed_.PredictEngagementsOf(i);
 }
 
-namespace {
-
-// Whether the centre of mass c lies strictly inside the polygon `points` (in the plane of
-// normal n, in order around their mean) seen along n: every edge turns the same way to it.
-bool OverPolygon(const std::vector<Vec3>& points, const Vec3& c, const Vec3& n) {
-  int positive = 0, negative = 0;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const Vec3& a = points[k];
-    const Vec3& b = points[(k + 1) % points.size()];
-    const double turn = n.dot((b - a).cross(c - a));
-    positive += turn > 0 ? 1 : 0;
-    negative += turn < 0 ? 1 : 0;
-  }
-  const int n_points = static_cast<int>(points.size());
-  return positive == n_points || negative == n_points;
-}
-
-}  // namespace
-
 bool WallContacts::HoldPolyhedron(std::uint32_t i, int w, const Vec3& normal,
                                   const RigidPath& path, const ContactGeometry& contact) {
   // The end of a bounce series on a face (issue #37 part 1): three or more points on the wall
@@ -102,8 +84,9 @@ bool WallContacts::HoldPolyhedron(std::uint32_t i, int w, const Vec3& normal,
   if (!OverPolygon(contact.points, path.centre.PositionAt(now), normal)) return false;
   const Vec3 omega = normal.dot(path.omega) * normal;
   const Vec3 v = path.centre.VelocityAt(now);
-  changes_.SetHeld(i, static_cast<std::uint8_t>(paths.accelerations().HeldBy(i) | 1u << w), v,
-                   omega);
+  Hold hold = paths.accelerations().HoldOf(i);
+  hold.walls = static_cast<std::uint8_t>(hold.walls | 1u << w);
+  changes_.SetHeld(i, hold, v, omega);
   ReportHold(i, w, contact.distance, contact.points.front(), normal, normal.dot(v));
   return true;
 }
@@ -319,16 +302,7 @@ void WallContacts::HandlePolyhedron(std::uint32_t i) {
   for (int v = 0; v < polyhedron.vertex_count(); ++v) {
     if (gaps[v] <= nearest + tolerance) contact.points.push_back(pose.ToWorld(polyhedron.vertex(v)));
   }
-  if (contact.points.size() > 2) {
-    const Vec3 mean = std::accumulate(contact.points.begin(), contact.points.end(),
-                                      Vec3(Vec3::Zero())) / static_cast<double>(contact.points.size());
-    const Vec3 u = plane.normal.unitOrthogonal();
-    const Vec3 v = plane.normal.cross(u);
-    std::sort(contact.points.begin(), contact.points.end(), [&](const Vec3& p, const Vec3& q) {
-      return std::atan2((p - mean).dot(v), (p - mean).dot(u)) <
-             std::atan2((q - mean).dot(v), (q - mean).dot(u));
-    });
-  }
+  OrderAroundMean(contact.points, plane.normal);
   if (HoldPolyhedron(i, w, plane.normal, path, contact)) return;
   RigidImpulseResult result;
   {
