@@ -65,10 +65,7 @@ Status World::Impl::RemoveBody(BodyId id) {
     const std::uint32_t s = StaticBodies::IndexOf(ids.InternalOf(id.index));
     // What rested on it falls (or rests on what else holds it).
     for (std::uint32_t i = 0; i < core_.bodies.Size(); ++i) {
-      Hold hold = core_.bodies.paths.accelerations().HoldOf(i);
-      if (hold.on_static != s) continue;
-      hold.on_static = kNoIndex;
-      changes_.SetHeld(i, hold, core_.bodies.paths.VelocityNow(i));
+      if (core_.bodies.paths.accelerations().HoldOf(i).on_static == s) changes_.ReleaseStatic(i);
     }
     core_.bodies.statics.Remove(s);
     ids.Remove(id.index);
@@ -228,9 +225,7 @@ void World::Impl::HandleBodyTimer(std::uint32_t i) {
     // face's boundary the static's hold ends (it slides off, or tips over the edge); else it
     // predicts again.
     if (StaticLeaveTime(bodies, i) <= core_.Now()) {
-      Hold hold = bodies.paths.accelerations().HoldOf(i);
-      hold.on_static = kNoIndex;
-      changes_.SetHeld(i, hold, bodies.paths.VelocityNow(i));
+      changes_.ReleaseStatic(i);
       ++core_.observers.stats().static_leaves;
     }
   } else {

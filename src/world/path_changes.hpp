@@ -41,7 +41,15 @@ class PathChanges {
   /// Whatever holds body i lets it go, its motion kept (a push from outside: SetVelocity,
   /// ApplyImpulse; what still holds it takes it up again).
   void Release(std::uint32_t i) {
-    if (core_.bodies.paths.accelerations().Held(i)) SetHeld(i, Hold{}, core_.bodies.paths.VelocityNow(i));
+    const ElementPaths& paths = core_.bodies.paths;
+    if (paths.accelerations().Held(i)) SetHeld(i, Hold{}, paths.VelocityNow(i));
+  }
+  /// The static's hold on body i ends (its walls' stay), its motion kept.
+  void ReleaseStatic(std::uint32_t i) {
+    const ElementPaths& paths = core_.bodies.paths;
+    Hold hold = paths.accelerations().HoldOf(i);
+    hold.on_static = kNoIndex;
+    SetHeld(i, hold, paths.VelocityNow(i));
   }
   /// A body's new free acceleration (gravity plus a new thrust), its velocity kept; a wall's
   /// hold ends (the wall takes it up again if the body still rests on it).

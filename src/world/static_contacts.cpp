@@ -299,20 +299,9 @@ bool StaticContacts::HoldOnFace(std::uint32_t i, std::uint32_t s, const Touch& t
   hold.face = (touch.static_is_a ? touch.features.a : touch.features.b).index;
   const Vec3 v = path.centre.VelocityAt(now);
   // Its centre must be inside the face, with time to go (else it would leave as it lands).
-  Path centre = path.centre;
-  centre.v0 = Accelerations::HeldAcceleration(v, hold);
-  centre.a = Accelerations::HeldAcceleration(accelerations.Free(i), hold);
-  centre.p0 = path.centre.PositionAt(now);
-  centre.t0 = now;
-  {
-    const StaticBodies::Static& st = bodies.statics[s];
-    const ConvexPolyhedron& polyhedron = *bodies.rigid.shapes()[st.shape].polyhedron;
-    std::vector<Vec3> loop;
-    for (const std::int32_t vertex : polyhedron.FaceVertices(hold.face)) {
-      loop.push_back(st.pose.ToWorld(polyhedron.vertex(vertex)));
-    }
-    if (!(FaceLeaveTime(loop, *n, centre, now) > now)) return false;
-  }
+  const Path centre{path.centre.PositionAt(now), Accelerations::HeldAcceleration(v, hold),
+                    Accelerations::HeldAcceleration(accelerations.Free(i), hold), now};
+  if (!(FaceLeaveTime(StaticFaceLoop(bodies, s, hold.face), *n, centre, now) > now)) return false;
   changes_.SetHeld(i, hold, v, omega);
   Statistics& stats = core_.observers.stats();
   core_.observers.NotePenetration(touch.contact.distance, Tolerance(i, s));
@@ -320,13 +309,12 @@ bool StaticContacts::HoldOnFace(std::uint32_t i, std::uint32_t s, const Touch& t
   ++stats.collisions;
   ++stats.static_collisions;
   if (core_.observers.WantsCollisions()) {
-    const BodyId moving_id = bodies.ids.IdOf(i), static_id = bodies.ids.IdOfSlot(bodies.statics[s].slot);
+    const BodyId moving_id = bodies.ids.IdOf(i);
+    const BodyId static_id = bodies.ids.IdOfSlot(bodies.statics[s].slot);
     const double impulse = std::max(-n->dot(v), 0.0) / bodies.materials.InvMass(i);
-    // The normal from A to B: from the static to the body when the static is A.
-    const Vec3 normal = touch.static_is_a ? *n : -*n;
     core_.observers.Collision(CollisionEvent{now, touch.static_is_a ? static_id : moving_id,
                                              touch.static_is_a ? moving_id : static_id, -1,
-                                             touch.contact.points.front(), normal, impulse});
+                                             touch.contact.points.front(), touch.contact.normal, impulse});
   }
   if (sparse_.PredictionOf(i).kind != EventKind::kNone) ++stats.stale_actor_absent;
   sparse_.PredictFull(i);

@@ -27,16 +27,21 @@ double FaceLeaveTime(std::span<const Vec3> loop, const Vec3& n, const Path& cent
   return leave;
 }
 
+std::vector<Vec3> StaticFaceLoop(const BodyStore& bodies, std::uint32_t s, std::int32_t face) {
+  const StaticBodies::Static& st = bodies.statics[s];
+  const ConvexPolyhedron& polyhedron = *bodies.rigid.shapes()[st.shape].polyhedron;
+  std::vector<Vec3> loop;
+  for (const std::int32_t vertex : polyhedron.FaceVertices(face)) {
+    loop.push_back(st.pose.ToWorld(polyhedron.vertex(vertex)));
+  }
+  return loop;
+}
+
 double StaticLeaveTime(const BodyStore& bodies, std::uint32_t i) {
   const Hold hold = bodies.paths.accelerations().HoldOf(i);
   if (hold.on_static == kNoIndex) return kInfinity;
-  const StaticBodies::Static& st = bodies.statics[hold.on_static];
-  const ConvexPolyhedron& polyhedron = *bodies.rigid.shapes()[st.shape].polyhedron;
-  std::vector<Vec3> loop;
-  for (const std::int32_t vertex : polyhedron.FaceVertices(hold.face)) {
-    loop.push_back(st.pose.ToWorld(polyhedron.vertex(vertex)));
-  }
-  return FaceLeaveTime(loop, hold.normal, bodies.paths.PathOf(i), bodies.paths.Now());
+  return FaceLeaveTime(StaticFaceLoop(bodies, hold.on_static, hold.face), hold.normal,
+                       bodies.paths.PathOf(i), bodies.paths.Now());
 }
 
 }  // namespace sparsedyn

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "motion/path.hpp"
 #include "world/body_store.hpp"
@@ -15,6 +16,9 @@ namespace sparsedyn {
 /// (EarliestRoot, EventTime). now if it is on or outside the polygon already; kInfinity if it
 /// never leaves.
 double FaceLeaveTime(std::span<const Vec3> loop, const Vec3& n, const Path& centre, double now);
+
+/// The loop of static s's face `face` in the world frame (counter-clockwise seen from outside).
+std::vector<Vec3> StaticFaceLoop(const BodyStore& bodies, std::uint32_t s, std::int32_t face);
 
 /// When body i, held on a static's face (Hold::on_static), leaves it: its centre of mass
 /// crosses the face's boundary seen along the normal (docs/sparse-phase.md#coming-to-rest).
